@@ -1,0 +1,10 @@
+/**
+ * The BRAIN-IoT eventing API: the types every smart behaviour compiles against. Source compatible with the
+ * original BRAIN-IoT fabric's {@code eu.brain.iot.eventing.api}.
+ */
+@Export
+@Version("1.0.0")
+package eu.brain.iot.eventing.api;
+
+import org.osgi.annotation.bundle.Export;
+import org.osgi.annotation.versioning.Version;
