@@ -18,7 +18,7 @@ public interface UntypedSmartBehaviour {
      *
      * @param eventType the fully qualified name of the event's type
      * @param properties the event's fields by name; nested data objects appear as maps, arrays and collections
-     *        as lists. The map is immutable.
+     *        as lists. The map belongs to this behaviour alone.
      */
     void notify(String eventType, Map<String, ?> properties);
 }

@@ -1,0 +1,26 @@
+package eu.brain.iot.eventing.impl;
+
+import java.util.Set;
+import java.util.function.Function;
+
+import org.osgi.framework.Filter;
+
+/**
+ * A registered behaviour as the bus sees it.
+ *
+ * @param serviceId the behaviour service's id
+ * @param name a readable name for logs and statistics
+ * @param bundle the symbolic name of the registering bundle
+ * @param consumed the consumed event type names (empty for a consumer of last resort)
+ * @param filter the filter over event fields, or {@code null}
+ * @param lastResort whether it only receives events no one else consumes
+ * @param target the {@code SmartBehaviour} or {@code UntypedSmartBehaviour} object
+ * @param classes loads a class by name as the behaviour's bundle sees it; {@code null} when it cannot
+ */
+record ConsumerSpec(long serviceId, String name, String bundle, Set<String> consumed, Filter filter,
+        boolean lastResort, Object target, Function<String, Class<?>> classes) {
+
+    boolean untyped() {
+        return target instanceof eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+    }
+}

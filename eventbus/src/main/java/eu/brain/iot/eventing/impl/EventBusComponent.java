@@ -1,0 +1,171 @@
+package eu.brain.iot.eventing.impl;
+
+import java.util.Arrays;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
+import org.osgi.framework.Filter;
+import org.osgi.framework.FrameworkUtil;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.metatype.annotations.Designate;
+
+import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
+import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+
+/**
+ * The event bus as a Declarative Services component: publishes {@link EventBus} and {@link EventBusStatistics},
+ * and follows the smart behaviour whiteboard. Behaviours come and go at any time, hence dynamic references with
+ * bind methods (constructor injection cannot follow them); everything else arrives through the constructor.
+ */
+@Component(service = { EventBus.class, EventBusStatistics.class }, configurationPid = EventBusComponent.PID,
+        configurationPolicy = ConfigurationPolicy.OPTIONAL)
+@Designate(ocd = BusConfig.class)
+public final class EventBusComponent implements EventBus, EventBusStatistics {
+
+    static final String PID = "eu.brain.iot.eventing";
+
+    private final AsyncEventBus bus;
+    private final Logger log;
+
+    @Activate
+    public EventBusComponent(BundleContext context, BusConfig config,
+            @Reference(service = LoggerFactory.class) Logger log) {
+        this.log = log;
+        this.bus = new AsyncEventBus(context.getProperty(Constants.FRAMEWORK_UUID), config.queue_capacity(),
+                config.overflow_timeout_ms(), log);
+    }
+
+    @Deactivate
+    void deactivate() {
+        bus.close();
+    }
+
+    @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
+            unbind = "removeSmartBehaviour")
+    void addSmartBehaviour(SmartBehaviour<BrainIoTEvent> behaviour, ServiceReference<?> ref) {
+        add(behaviour, ref);
+    }
+
+    void removeSmartBehaviour(ServiceReference<?> ref) {
+        bus.removeConsumer(serviceId(ref));
+    }
+
+    @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
+            unbind = "removeUntypedSmartBehaviour")
+    void addUntypedSmartBehaviour(UntypedSmartBehaviour behaviour, ServiceReference<?> ref) {
+        add(behaviour, ref);
+    }
+
+    void removeUntypedSmartBehaviour(ServiceReference<?> ref) {
+        bus.removeConsumer(serviceId(ref));
+    }
+
+    private void add(Object behaviour, ServiceReference<?> ref) {
+        Bundle bundle = ref.getBundle();
+        String bundleName = bundle == null ? "?" : bundle.getSymbolicName();
+        String name = describe(ref, bundleName);
+        Set<String> consumed = new LinkedHashSet<>(strings(ref.getProperty(SmartBehaviourNamespace.CONSUMED_PROPERTY)));
+        boolean lastResort = Boolean.parseBoolean(String.valueOf(ref.getProperty(SmartBehaviourNamespace.LAST_RESORT_PROPERTY)));
+        if (lastResort && !(behaviour instanceof UntypedSmartBehaviour)) {
+            log.error("Smart behaviour {} (bundle {}) is marked consumer of last resort but is not an "
+                    + "UntypedSmartBehaviour; it gets no events. Implement UntypedSmartBehaviour.", name, bundleName);
+            return;
+        }
+        if (!lastResort && consumed.isEmpty()) {
+            log.error("Smart behaviour {} (bundle {}) declares no consumed event types; it gets no events. "
+                    + "Annotate it with @SmartBehaviourDefinition(consumed = ...).", name, bundleName);
+            return;
+        }
+        Filter filter = null;
+        Object filterText = ref.getProperty(SmartBehaviourNamespace.FILTER_PROPERTY);
+        if (filterText instanceof String text && !text.isBlank()) {
+            try {
+                filter = FrameworkUtil.createFilter(text);
+            } catch (InvalidSyntaxException e) {
+                log.error("Smart behaviour {} (bundle {}) has an invalid filter \"{}\": {}; it gets no events "
+                        + "until the filter is fixed.", name, bundleName, text, e.getMessage());
+                return;
+            }
+        }
+        bus.addConsumer(new ConsumerSpec(serviceId(ref), name, bundleName, Set.copyOf(consumed), filter, lastResort,
+                behaviour, className -> loadClass(bundle, className)));
+        log.debug("Smart behaviour {} (bundle {}) consumes {}", name, bundleName, lastResort ? "unhandled events" : consumed);
+    }
+
+    private static Class<?> loadClass(Bundle bundle, String className) {
+        try {
+            return bundle == null ? null : bundle.loadClass(className);
+        } catch (ClassNotFoundException | IllegalStateException e) {
+            return null;
+        }
+    }
+
+    private static String describe(ServiceReference<?> ref, String bundleName) {
+        Object name = ref.getProperty(SmartBehaviourNamespace.PROPERTY_PREFIX + SmartBehaviourNamespace.NAME);
+        if (!(name instanceof String s) || s.isBlank()) {
+            name = ref.getProperty("component.name");
+        }
+        if (!(name instanceof String s2) || s2.isBlank()) {
+            name = bundleName;
+        }
+        return name + "#" + serviceId(ref);
+    }
+
+    private static long serviceId(ServiceReference<?> ref) {
+        return (Long) ref.getProperty(Constants.SERVICE_ID);
+    }
+
+    private static List<String> strings(Object value) {
+        if (value instanceof String s) {
+            return List.of(s);
+        }
+        if (value instanceof String[] a) {
+            return Arrays.asList(a);
+        }
+        if (value instanceof java.util.Collection<?> c) {
+            return c.stream().map(String::valueOf).toList();
+        }
+        return List.of();
+    }
+
+    @Override
+    public void deliver(BrainIoTEvent event) {
+        bus.deliver(event);
+    }
+
+    @Override
+    public void deliver(String eventType, Map<String, Object> eventData) {
+        bus.deliver(eventType, eventData);
+    }
+
+    @Override
+    public List<EventTypeStatistics> eventTypes() {
+        return bus.eventTypes();
+    }
+
+    @Override
+    public List<ConsumerStatistics> consumers() {
+        return bus.consumers();
+    }
+}

@@ -1,0 +1,33 @@
+package eu.brain.iot.eventing.impl;
+
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.LongAdder;
+
+import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+
+/** Counters of one event type; updated by publishers and delivery threads at once, hence adders. */
+final class EventTypeCounters {
+    final String eventType;
+    final LongAdder published = new LongAdder();
+    final LongAdder delivered = new LongAdder();
+    final LongAdder failed = new LongAdder();
+    final LongAdder unhandled = new LongAdder();
+    final LongAdder discarded = new LongAdder();
+    /** Set once the first unhandled event of this type was logged, so that the log is not flooded. */
+    final AtomicBoolean unhandledLogged = new AtomicBoolean();
+
+    EventTypeCounters(String eventType) {
+        this.eventType = eventType;
+    }
+
+    EventTypeStatistics snapshot() {
+        EventTypeStatistics s = new EventTypeStatistics();
+        s.eventType = eventType;
+        s.published = published.sum();
+        s.delivered = delivered.sum();
+        s.failed = failed.sum();
+        s.unhandled = unhandled.sum();
+        s.discarded = discarded.sum();
+        return s;
+    }
+}

@@ -1,0 +1,88 @@
+package eu.brain.iot.eventing.impl;
+
+import java.lang.ref.WeakReference;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
+
+/**
+ * Which behaviours take which event types, for one fixed set of behaviours. A new table replaces the old one
+ * whenever a behaviour comes or goes, so a table never changes; only its cache of computed routes grows.
+ * Routes are cached by type name and remember their class weakly, so a table never keeps an uninstalled
+ * bundle's classes alive.
+ */
+final class RouteTable {
+
+    static final RouteTable EMPTY = new RouteTable(List.of());
+
+    private final List<ConsumerChannel> typedOrNamed;
+    final ConsumerChannel[] lastResort;
+    private final ConcurrentHashMap<String, Route> byClass = new ConcurrentHashMap<>();
+    private final ConcurrentHashMap<String, Route> byName = new ConcurrentHashMap<>();
+
+    RouteTable(Collection<ConsumerChannel> channels) {
+        List<ConsumerChannel> named = new ArrayList<>();
+        List<ConsumerChannel> last = new ArrayList<>();
+        for (ConsumerChannel c : channels) {
+            (c.spec.lastResort() ? last : named).add(c);
+        }
+        this.typedOrNamed = List.copyOf(named);
+        this.lastResort = last.toArray(ConsumerChannel[]::new);
+    }
+
+    /** The route of a typed event of this class (its supertypes' consumers included). */
+    Route routeFor(Class<?> eventClass, Function<String, EventTypeCounters> counters) {
+        Route route = byClass.get(eventClass.getName());
+        if (route == null || route.type.get() != eventClass) {
+            route = compute(typeNames(eventClass), counters.apply(eventClass.getName()), eventClass);
+            byClass.put(eventClass.getName(), route);
+        }
+        return route;
+    }
+
+    /** The route of an untyped event: behaviours that consume exactly this type name. */
+    Route routeFor(String eventType, Function<String, EventTypeCounters> counters) {
+        return byName.computeIfAbsent(eventType, t -> compute(Set.of(t), counters.apply(t), null));
+    }
+
+    private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type) {
+        List<ConsumerChannel> plain = new ArrayList<>();
+        List<ConsumerChannel> filtered = new ArrayList<>();
+        for (ConsumerChannel c : typedOrNamed) {
+            if (c.spec.consumed().stream().anyMatch(names::contains)) {
+                (c.spec.filter() == null ? plain : filtered).add(c);
+            }
+        }
+        return new Route(new WeakReference<>(type), counters, plain.toArray(ConsumerChannel[]::new),
+                filtered.toArray(ConsumerChannel[]::new));
+    }
+
+    /** The names of the class, its superclasses and all its interfaces. */
+    static Set<String> typeNames(Class<?> type) {
+        Set<String> names = new LinkedHashSet<>();
+        for (Class<?> c = type; c != null && c != Object.class; c = c.getSuperclass()) {
+            names.add(c.getName());
+            addInterfaces(c, names);
+        }
+        return names;
+    }
+
+    private static void addInterfaces(Class<?> type, Set<String> names) {
+        for (Class<?> i : type.getInterfaces()) {
+            if (names.add(i.getName())) {
+                addInterfaces(i, names);
+            }
+        }
+    }
+
+    /**
+     * The behaviours an event type goes to: those without a filter always, those with a filter when it matches.
+     */
+    record Route(WeakReference<Class<?>> type, EventTypeCounters counters, ConsumerChannel[] plain,
+            ConsumerChannel[] filtered) {
+    }
+}
