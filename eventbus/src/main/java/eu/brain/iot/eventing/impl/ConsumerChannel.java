@@ -148,8 +148,8 @@ final class ConsumerChannel {
 
     private void handle(Envelope envelope) {
         try {
-            if (spec.target() instanceof UntypedSmartBehaviour untyped) {
-                untyped.notify(envelope.type(), toMap(envelope));
+            if (spec.untyped()) {
+                ((UntypedSmartBehaviour) spec.target()).notify(envelope.type(), toMap(envelope));
             } else {
                 @SuppressWarnings("unchecked")
                 SmartBehaviour<BrainIoTEvent> typed = (SmartBehaviour<BrainIoTEvent>) spec.target();

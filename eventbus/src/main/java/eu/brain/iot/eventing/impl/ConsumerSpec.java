@@ -14,13 +14,10 @@ import org.osgi.framework.Filter;
  * @param consumed the consumed event type names (empty for a consumer of last resort)
  * @param filter the filter over event fields, or {@code null}
  * @param lastResort whether it only receives events no one else consumes
+ * @param untyped whether it was registered as an {@code UntypedSmartBehaviour} (an object may implement both)
  * @param target the {@code SmartBehaviour} or {@code UntypedSmartBehaviour} object
  * @param classes loads a class by name as the behaviour's bundle sees it; {@code null} when it cannot
  */
 record ConsumerSpec(long serviceId, String name, String bundle, Set<String> consumed, Filter filter,
-        boolean lastResort, Object target, Function<String, Class<?>> classes) {
-
-    boolean untyped() {
-        return target instanceof eu.brain.iot.eventing.api.UntypedSmartBehaviour;
-    }
+        boolean lastResort, boolean untyped, Object target, Function<String, Class<?>> classes) {
 }

@@ -64,7 +64,7 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
             unbind = "removeSmartBehaviour")
     void addSmartBehaviour(SmartBehaviour<BrainIoTEvent> behaviour, ServiceReference<?> ref) {
-        add(behaviour, ref);
+        add(behaviour, false, ref);
     }
 
     void removeSmartBehaviour(ServiceReference<?> ref) {
@@ -74,20 +74,20 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
             unbind = "removeUntypedSmartBehaviour")
     void addUntypedSmartBehaviour(UntypedSmartBehaviour behaviour, ServiceReference<?> ref) {
-        add(behaviour, ref);
+        add(behaviour, true, ref);
     }
 
     void removeUntypedSmartBehaviour(ServiceReference<?> ref) {
         bus.removeConsumer(serviceId(ref));
     }
 
-    private void add(Object behaviour, ServiceReference<?> ref) {
+    private void add(Object behaviour, boolean untyped, ServiceReference<?> ref) {
         Bundle bundle = ref.getBundle();
         String bundleName = bundle == null ? "?" : bundle.getSymbolicName();
         String name = describe(ref, bundleName);
         Set<String> consumed = new LinkedHashSet<>(strings(ref.getProperty(SmartBehaviourNamespace.CONSUMED_PROPERTY)));
         boolean lastResort = Boolean.parseBoolean(String.valueOf(ref.getProperty(SmartBehaviourNamespace.LAST_RESORT_PROPERTY)));
-        if (lastResort && !(behaviour instanceof UntypedSmartBehaviour)) {
+        if (lastResort && !untyped) {
             log.error("Smart behaviour {} (bundle {}) is marked consumer of last resort but is not an "
                     + "UntypedSmartBehaviour; it gets no events. Implement UntypedSmartBehaviour.", name, bundleName);
             return;
@@ -109,7 +109,7 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
             }
         }
         bus.addConsumer(new ConsumerSpec(serviceId(ref), name, bundleName, Set.copyOf(consumed), filter, lastResort,
-                behaviour, className -> loadClass(bundle, className)));
+                untyped, behaviour, className -> loadClass(bundle, className)));
         log.debug("Smart behaviour {} (bundle {}) consumes {}", name, bundleName, lastResort ? "unhandled events" : consumed);
     }
 

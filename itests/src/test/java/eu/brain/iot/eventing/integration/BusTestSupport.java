@@ -1,0 +1,68 @@
+package eu.brain.iot.eventing.integration;
+
+import java.util.ArrayList;
+import java.util.Hashtable;
+import java.util.List;
+
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceRegistration;
+
+import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+
+/** Registers behaviours as services, as a bundle with @SmartBehaviourDefinition would, and removes them after. */
+final class BusTestSupport implements AutoCloseable {
+    private final BundleContext context;
+    private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
+
+    BusTestSupport(BundleContext context) {
+        this.context = context;
+    }
+
+    ServiceRegistration<?> typed(SmartBehaviour<?> behaviour, String filter, Class<?>... consumed) {
+        Hashtable<String, Object> props = props(filter, consumed);
+        return track(context.registerService(SmartBehaviour.class.getName(), behaviour, props));
+    }
+
+    ServiceRegistration<?> untyped(UntypedSmartBehaviour behaviour, String... consumed) {
+        Hashtable<String, Object> props = new Hashtable<>();
+        props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, consumed);
+        return track(context.registerService(UntypedSmartBehaviour.class, behaviour, props));
+    }
+
+    ServiceRegistration<?> lastResort(UntypedSmartBehaviour behaviour) {
+        Hashtable<String, Object> props = new Hashtable<>();
+        props.put(SmartBehaviourNamespace.LAST_RESORT_PROPERTY, Boolean.TRUE);
+        return track(context.registerService(UntypedSmartBehaviour.class, behaviour, props));
+    }
+
+    private static Hashtable<String, Object> props(String filter, Class<?>... consumed) {
+        Hashtable<String, Object> props = new Hashtable<>();
+        String[] names = new String[consumed.length];
+        for (int i = 0; i < consumed.length; i++) {
+            names[i] = consumed[i].getName();
+        }
+        props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, names);
+        if (filter != null) {
+            props.put(SmartBehaviourNamespace.FILTER_PROPERTY, filter);
+        }
+        return props;
+    }
+
+    private ServiceRegistration<?> track(ServiceRegistration<?> registration) {
+        registrations.add(registration);
+        return registration;
+    }
+
+    @Override
+    public void close() {
+        for (ServiceRegistration<?> r : registrations) {
+            try {
+                r.unregister();
+            } catch (IllegalStateException alreadyGone) {
+                // unregistered by the test itself
+            }
+        }
+    }
+}
