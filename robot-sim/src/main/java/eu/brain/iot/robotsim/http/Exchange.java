@@ -1,0 +1,141 @@
+package eu.brain.iot.robotsim.http;
+
+import eu.brain.iot.robotsim.view.Json;
+import io.netty.buffer.Unpooled;
+import io.netty.channel.ChannelFutureListener;
+import io.netty.channel.ChannelHandlerContext;
+import io.netty.handler.codec.http.DefaultFullHttpResponse;
+import io.netty.handler.codec.http.FullHttpResponse;
+import io.netty.handler.codec.http.HttpHeaderNames;
+import io.netty.handler.codec.http.HttpHeaderValues;
+import io.netty.handler.codec.http.HttpMethod;
+import io.netty.handler.codec.http.HttpResponseStatus;
+import io.netty.handler.codec.http.HttpVersion;
+import io.netty.util.AsciiString;
+import java.nio.charset.StandardCharsets;
+import java.util.LinkedHashMap;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * One request and its answer. Created on a Netty I/O thread; may be answered from any thread (Netty hands the
+ * write to the channel's event loop). Fault injection hooks in here: added latency and malformed bodies.
+ */
+final class Exchange {
+    private static final AsciiString APPLICATION_JSON = AsciiString.cached("application/json");
+
+    private final ChannelHandlerContext ctx;
+    private final HttpMethod method;
+    private final String path;
+    private final byte[] body;
+    private final boolean keepAlive;
+    private final HttpVersion version;
+    private int delayMs;
+    private boolean malformed;
+
+    Exchange(ChannelHandlerContext ctx, HttpMethod method, String path, byte[] body, boolean keepAlive,
+             HttpVersion version) {
+        this.ctx = ctx;
+        this.method = method;
+        this.path = path;
+        this.body = body;
+        this.keepAlive = keepAlive;
+        this.version = version;
+    }
+
+    HttpMethod method() {
+        return method;
+    }
+
+    String path() {
+        return path;
+    }
+
+    byte[] body() {
+        return body;
+    }
+
+    /** Delays the answer (fault: latency). */
+    void delay(int millis) {
+        delayMs = millis;
+    }
+
+    /** Truncates the JSON of the answer (fault: malformed JSON). */
+    void malformed() {
+        malformed = true;
+    }
+
+    void json(int status, Object value) {
+        send(status, Json.bytes(value), null);
+    }
+
+    void json(int status, byte[] json) {
+        send(status, json, null);
+    }
+
+    void error(ApiException e) {
+        error(e.status(), e.field(), e.getMessage(), null);
+    }
+
+    void error(int status, String field, String message, String allow) {
+        Map<String, Object> doc = new LinkedHashMap<>();
+        doc.put("error", message);
+        doc.put("field", field);
+        doc.put("status", status);
+        send(status, Json.bytes(doc), allow);
+    }
+
+    /** Closes the connection without an answer (fault: dropped connection). */
+    void drop() {
+        if (delayMs > 0) {
+            ctx.executor().schedule(() -> ctx.close(), delayMs, TimeUnit.MILLISECONDS);
+        } else {
+            ctx.close();
+        }
+    }
+
+    private void send(int status, byte[] json, String allow) {
+        byte[] content = malformed ? truncate(json) : json;
+        FullHttpResponse response = new DefaultFullHttpResponse(version, HttpResponseStatus.valueOf(status),
+                Unpooled.wrappedBuffer(content));
+        response.headers()
+                .set(HttpHeaderNames.CONTENT_TYPE, APPLICATION_JSON)
+                .setInt(HttpHeaderNames.CONTENT_LENGTH, content.length);
+        if (allow != null) {
+            response.headers().set(HttpHeaderNames.ALLOW, allow);
+        }
+        if (keepAlive && version.equals(HttpVersion.HTTP_1_0)) {
+            response.headers().set(HttpHeaderNames.CONNECTION, HttpHeaderValues.KEEP_ALIVE);
+        } else if (!keepAlive) {
+            response.headers().set(HttpHeaderNames.CONNECTION, HttpHeaderValues.CLOSE);
+        }
+        if (delayMs > 0) {
+            ctx.executor().schedule(() -> write(response), delayMs, TimeUnit.MILLISECONDS);
+        } else {
+            write(response);
+        }
+    }
+
+    private void write(FullHttpResponse response) {
+        if (keepAlive) {
+            ctx.writeAndFlush(response, ctx.voidPromise());
+        } else {
+            ctx.writeAndFlush(response).addListener(ChannelFutureListener.CLOSE);
+        }
+    }
+
+    /** Cuts a JSON document in the middle (and never to a complete document). */
+    static byte[] truncate(byte[] json) {
+        int keep = Math.max(1, json.length / 2);
+        byte[] cut = new byte[keep];
+        System.arraycopy(json, 0, cut, 0, keep);
+        if (cut[keep - 1] == '}' || cut[keep - 1] == ']') {
+            cut[keep - 1] = ',';
+        }
+        return cut;
+    }
+
+    static String utf8(byte[] bytes) {
+        return new String(bytes, StandardCharsets.UTF_8);
+    }
+}

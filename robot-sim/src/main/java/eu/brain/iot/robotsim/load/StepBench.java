@@ -1,0 +1,126 @@
+package eu.brain.iot.robotsim.load;
+
+import eu.brain.iot.robotsim.cli.Flags;
+import eu.brain.iot.robotsim.cli.UsageException;
+import eu.brain.iot.robotsim.view.ViewPublisher;
+import eu.brain.iot.robotsim.world.CommandRejectedException;
+import eu.brain.iot.robotsim.world.Commands;
+import eu.brain.iot.robotsim.world.MapGenerator;
+import eu.brain.iot.robotsim.world.Robot;
+import eu.brain.iot.robotsim.world.SimRules;
+import eu.brain.iot.robotsim.world.StepEngine;
+import eu.brain.iot.robotsim.world.Terrain;
+import eu.brain.iot.robotsim.world.WarehouseMap;
+import eu.brain.iot.robotsim.world.World;
+import java.io.PrintStream;
+import java.util.Arrays;
+import java.util.Random;
+import java.util.Set;
+
+/**
+ * Times the world thread's work per step on a generated warehouse: the step itself (missions, path planning,
+ * sensors, moves, counters) plus publishing the changed robots' JSON. Every idle robot gets a new random errand
+ * (go somewhere, pick or place) each step, so all robots keep working.
+ */
+public final class StepBench {
+    public static final String USAGE = """
+            Usage: java -jar robot-sim.jar step-bench [options]
+              --robots N   robots (default 1000)
+              --carts N    carts (default 2000)
+              --width N    map width (default 200)
+              --height N   map height (default 100)
+              --steps N    measured steps (default 600)
+              --warmup N   steps before measuring (default 200)
+              --seed N     seed of the map and the errands (default 1)
+            """;
+
+    private StepBench() {
+    }
+
+    public static void main(String[] args) throws UsageException {
+        run(args, System.out);
+    }
+
+    public static void run(String[] args, PrintStream out) throws UsageException {
+        Flags f = Flags.parse(args, Set.of("robots", "carts", "width", "height", "steps", "warmup", "seed"),
+                Set.of());
+        int robots = f.intValue("robots", 1000, 1, 1_000_000);
+        int carts = f.intValue("carts", 2000, 0, 1_000_000);
+        int width = f.intValue("width", 200, 7, 5000);
+        int height = f.intValue("height", 100, 12, 5000);
+        int steps = f.intValue("steps", 600, 1, 1_000_000);
+        int warmup = f.intValue("warmup", 200, 0, 1_000_000);
+        long seed = f.longValue("seed", 1, Long.MIN_VALUE, Long.MAX_VALUE);
+        WarehouseMap map;
+        try {
+            map = MapGenerator.generate(width, height, robots, carts, Math.max(1, width / 40), seed);
+        } catch (IllegalArgumentException e) {
+            throw new UsageException(e.getMessage());
+        }
+        World world = new World(map, SimRules.DEFAULT.withSeed(seed).withDoorOpenSteps(0));
+        StepEngine engine = new StepEngine(world, i -> false);
+        Commands commands = new Commands(world);
+        ViewPublisher views = new ViewPublisher(world);
+        for (int d = 0; d < world.doorCount(); d++) {
+            commands.door(d, true);
+        }
+        Random random = new Random(seed);
+        out.printf("step-bench: %s, %d robots, %d carts; %d warm-up steps, %d measured%n",
+                map.name(), robots, carts, warmup, steps);
+        long first = timeStep(world, engine, commands, views, random);
+        for (int i = 1; i < warmup; i++) {
+            timeStep(world, engine, commands, views, random);
+        }
+        long[] nanos = new long[steps];
+        for (int i = 0; i < steps; i++) {
+            nanos[i] = timeStep(world, engine, commands, views, random);
+        }
+        Arrays.sort(nanos);
+        double mean = Arrays.stream(nanos).average().orElse(0) / 1e6;
+        out.printf("step time: mean %.2f ms, p50 %.2f ms, p99 %.2f ms, max %.2f ms (first step, all robots "
+                        + "planning: %.2f ms); budget 500 ms per step%n", mean, nanos[steps / 2] / 1e6,
+                nanos[(int) Math.min(steps - 1, Math.ceil(steps * 0.99) - 1)] / 1e6, nanos[steps - 1] / 1e6,
+                first / 1e6);
+        out.printf("after %d steps: near misses %d, deadlocks %d%n", world.step(), world.nearMisses(),
+                world.deadlocks());
+    }
+
+    private static long timeStep(World world, StepEngine engine, Commands commands, ViewPublisher views,
+                                 Random random) {
+        giveErrands(world, commands, random);
+        long t0 = System.nanoTime();
+        engine.step();
+        views.publishAll(world);
+        return System.nanoTime() - t0;
+    }
+
+    /** Idle robots get an errand: pick when on a cart, place when carrying in storage, else go somewhere. */
+    private static void giveErrands(World world, Commands commands, Random random) {
+        WarehouseMap map = world.map();
+        for (int i = 0; i < world.robotCount(); i++) {
+            Robot r = world.robot(i);
+            if (r.current() != null || !r.queued().isEmpty()) {
+                continue;
+            }
+            Terrain here = map.terrain(r.x(), r.y());
+            if (r.carried() < 0 && world.cartAt(r.x(), r.y()) >= 0) {
+                commands.pick(i);
+            } else if (r.carried() >= 0 && here == Terrain.STORAGE) {
+                commands.place(i);
+            } else {
+                Terrain wanted = r.carried() >= 0 ? Terrain.STORAGE : Terrain.UNLOAD;
+                int x;
+                int y;
+                do {
+                    x = random.nextInt(map.width());
+                    y = random.nextInt(map.height());
+                } while (map.terrain(x, y) != wanted);
+                try {
+                    commands.goTo(i, x, y);
+                } catch (CommandRejectedException e) {
+                    throw new IllegalStateException(e);
+                }
+            }
+        }
+    }
+}

@@ -1,0 +1,149 @@
+package eu.brain.iot.robotsim.world;
+
+import java.util.ArrayDeque;
+import java.util.Deque;
+import java.util.List;
+
+/**
+ * A simulated robot. Owned by the world's owner thread (the step thread of a running simulator); never read
+ * directly by HTTP threads, which see {@code RobotView}s published after each change.
+ */
+public final class Robot {
+    private static final int[] NO_PATH = new int[0];
+    static final int HISTORY = 16;
+
+    private final int index;
+    private final String id;
+    int x;
+    int y;
+    Heading heading = Heading.N;
+    /** True when the robot works on a mission and is not held up by its front sensor. */
+    boolean running;
+    /** 0 nothing in front, 1 a robot, 2 a closed door. */
+    int detect;
+    /** Index of the carried cart, -1 when none. */
+    int carried = -1;
+    final Deque<Mission> queue = new ArrayDeque<>();
+    /** The most recently ended missions, newest first, for query_state. */
+    private final Deque<Mission> history = new ArrayDeque<>();
+    Mission current;
+    /** Cells still to travel for the current GOTO (cell indices), consumed from pathPos. */
+    int[] path = NO_PATH;
+    int pathPos;
+    /** Steps left of the current pick or place (the corkscrew lift takes time). */
+    int actionLeft;
+    /** Robot (index) whose cell the front sensor sees this step, -1 when none. */
+    int blockedBy = -1;
+    boolean wasBlockedByRobot;
+    int cycleSteps;
+    boolean deadlockCounted;
+    long nearMisses;
+    long deadlocks;
+    boolean offline;
+
+    Robot(int index, String id, int x, int y) {
+        this.index = index;
+        this.id = id;
+        this.x = x;
+        this.y = y;
+    }
+
+    public int index() {
+        return index;
+    }
+
+    public String id() {
+        return id;
+    }
+
+    public int x() {
+        return x;
+    }
+
+    public int y() {
+        return y;
+    }
+
+    public Heading heading() {
+        return heading;
+    }
+
+    public boolean running() {
+        return running;
+    }
+
+    public int detect() {
+        return detect;
+    }
+
+    /** Index of the carried cart, -1 when none. */
+    public int carried() {
+        return carried;
+    }
+
+    public long nearMisses() {
+        return nearMisses;
+    }
+
+    public long deadlocks() {
+        return deadlocks;
+    }
+
+    public boolean offline() {
+        return offline;
+    }
+
+    /** The mission to show: the running one, else the next queued one, else the last that ended; or null. */
+    public Mission shownMission() {
+        if (current != null) {
+            return current;
+        }
+        Mission next = queue.peekFirst();
+        return next != null ? next : history.peekFirst();
+    }
+
+    public Mission current() {
+        return current;
+    }
+
+    public List<Mission> queued() {
+        return List.copyOf(queue);
+    }
+
+    void setPath(int[] cells) {
+        path = cells;
+        pathPos = 0;
+    }
+
+    void clearPath() {
+        path = NO_PATH;
+        pathPos = 0;
+    }
+
+    boolean hasPathLeft() {
+        return pathPos < path.length;
+    }
+
+    int nextCell() {
+        return path[pathPos];
+    }
+
+    /** Missions that ended, newest first (at most {@value #HISTORY}). */
+    public List<Mission> history() {
+        return List.copyOf(history);
+    }
+
+    void remember(Mission ended) {
+        history.addFirst(ended);
+        if (history.size() > HISTORY) {
+            history.removeLast();
+        }
+    }
+
+    /** Forgets the current mission (the caller has remembered it). */
+    void endCurrent() {
+        current = null;
+        clearPath();
+        actionLeft = 0;
+    }
+}
