@@ -1,0 +1,95 @@
+package eu.brain.iot.eventing.integration;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+import static org.awaitility.Awaitility.await;
+
+import java.time.Duration;
+import java.util.Hashtable;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.junit.jupiter.api.Test;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
+import org.osgi.framework.ServiceReference;
+import org.osgi.service.cm.Configuration;
+import org.osgi.service.cm.ConfigurationAdmin;
+import org.osgi.test.common.annotation.InjectBundleContext;
+import org.osgi.test.common.annotation.InjectService;
+
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.EventBusOverflowException;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+
+/** The documented overflow policy: bounded queues, the publisher waits, then gets a clear exception. */
+class OverflowIntegrationTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(10);
+
+    @InjectBundleContext
+    BundleContext context;
+
+    @InjectService(timeout = 5000)
+    ConfigurationAdmin configAdmin;
+
+    @Test
+    void aFullQueueMakesDeliverWaitThenThrowWithoutPartialDelivery() throws Exception {
+        long oldBus = busServiceId();
+        Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
+        Hashtable<String, Object> props = new Hashtable<>();
+        props.put("queue.capacity", 10);
+        props.put("overflow.timeout.ms", 300L);
+        config.update(props);
+        BusTestSupport behaviours = new BusTestSupport(context);
+        try {
+            await().atMost(DEADLINE).until(() -> busServiceId() != oldBus);
+            EventBus bus = context.getService(context.getServiceReference(EventBus.class));
+            EventBusStatistics stats = context.getService(context.getServiceReference(EventBusStatistics.class));
+
+            int baseline = stats.consumers().size();
+            CountDownLatch release = new CountDownLatch(1);
+            AtomicInteger slowCount = new AtomicInteger();
+            behaviours.typed((SmartBehaviour<PositionEvent>) e -> {
+                slowCount.incrementAndGet();
+                try {
+                    release.await();
+                } catch (InterruptedException ie) {
+                    Thread.currentThread().interrupt();
+                }
+            }, null, PositionEvent.class);
+            Recorder fast = new Recorder();
+            behaviours.typed(fast, null, PositionEvent.class);
+            await().atMost(DEADLINE).untilAsserted(() -> assertThat(stats.consumers()).hasSize(baseline + 2));
+
+            bus.deliver(new PositionEvent("robot1", 0, 0, 0));
+            await().atMost(DEADLINE).until(() -> slowCount.get() == 1);
+            for (int i = 1; i <= 10; i++) {
+                bus.deliver(new PositionEvent("robot1", 0, 0, i)); // fills the slow queue to its capacity
+            }
+            long start = System.nanoTime();
+            assertThatThrownBy(() -> bus.deliver(new PositionEvent("robot1", 0, 0, 11)))
+                    .isInstanceOf(EventBusOverflowException.class)
+                    .hasMessageContaining("stayed full (10 events)")
+                    .hasMessageContaining(PositionEvent.class.getName());
+            assertThat(Duration.ofNanos(System.nanoTime() - start)).isGreaterThanOrEqualTo(Duration.ofMillis(300));
+
+            await().atMost(DEADLINE).until(() -> fast.events.size() == 11);
+            release.countDown();
+            await().atMost(DEADLINE).until(() -> slowCount.get() == 11);
+            // the refused event reached no one, not even the consumer that had room
+            assertThat(fast.events).extracting(e -> ((PositionEvent) e).seq).doesNotContain(11L);
+        } finally {
+            behaviours.close();
+            long configuredBus = busServiceId();
+            config.delete();
+            await().atMost(DEADLINE).until(() -> busServiceId() != configuredBus && busServiceId() != -1);
+        }
+    }
+
+    private long busServiceId() {
+        ServiceReference<EventBus> ref = context.getServiceReference(EventBus.class);
+        return ref == null ? -1 : (Long) ref.getProperty(Constants.SERVICE_ID);
+    }
+}
