@@ -1,0 +1,115 @@
+package eu.brain.iot.robotsim.cli;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import eu.brain.iot.robotsim.RobotSim;
+import eu.brain.iot.robotsim.SimConfig;
+import eu.brain.iot.robotsim.world.MapParser;
+import eu.brain.iot.robotsim.world.WarehouseMap;
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.CsvSource;
+
+class MainTest {
+    @TempDir
+    Path dir;
+
+    private final ByteArrayOutputStream out = new ByteArrayOutputStream();
+    private final ByteArrayOutputStream err = new ByteArrayOutputStream();
+
+    private int run(String... args) {
+        return Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
+                new PrintStream(err, true, StandardCharsets.UTF_8));
+    }
+
+    private String err() {
+        return err.toString(StandardCharsets.UTF_8);
+    }
+
+    @ParameterizedTest(name = "{0}")
+    @CsvSource(delimiter = '|', value = {
+        "--port abc                | robot-sim: --port must be a whole number 0..65535, found 'abc'",
+        "--port 70000              | robot-sim: --port must be a whole number 0..65535, found '70000'",
+        "--port                    | robot-sim: --port needs a value",
+        "--colour red              | robot-sim: unknown option --colour",
+        "--speed 0                 | robot-sim: --speed must be a number > 0.0 and <= 10000.0, found '0'",
+        "--map /no/such.map        | robot-sim: --map: no such file '/no/such.map'",
+        "--fault errorRate=2       | robot-sim: --fault 'errorRate=2': errorRate must be a number from 0 to 1",
+        "--fault robot9:offline=true --port 0 | robot-sim: --fault: fault for unknown robot 'robot9' (the map has 3 robots: robot1..robot3)",
+        "--manual-step=yes         | robot-sim: --manual-step takes no value",
+        "fly                       | robot-sim: unknown command 'fly'",
+    })
+    void badCommandLinesGiveOneLineAndUsageWithoutStackTrace(String args, String firstLine) {
+        assertThat(run(args.split(" "))).isEqualTo(2);
+        String[] lines = err().split("\n");
+        assertThat(lines[0]).isEqualTo(firstLine);
+        assertThat(lines[1]).startsWith("Usage:");
+        assertThat(err()).doesNotContain("Exception").doesNotContain("\tat ");
+    }
+
+    @Test
+    void badMapFileSaysWhere() throws Exception {
+        Path map = dir.resolve("bad.map");
+        Files.writeString(map, "map:\n###\n#Q#\n");
+        assertThat(run("--map", map.toString())).isEqualTo(2);
+        assertThat(err()).startsWith("robot-sim: --map: " + map + ":3:2: unknown cell 'Q'");
+    }
+
+    @Test
+    void helpIsPrintedAndExitsZero() {
+        assertThat(run("--help")).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("--manual-step").contains("--fault SPEC");
+        assertThat(run("generate", "--help")).isZero();
+    }
+
+    @Test
+    void startsAndPrintsEveryRobotAndDoorUrl() throws Exception {
+        RobotSim sim = ServeCommand.start(new String[] {"--port", "0", "--manual-step", "--seed", "5"},
+                new PrintStream(out, true, StandardCharsets.UTF_8));
+        try {
+            String printed = out.toString(StandardCharsets.UTF_8);
+            String base = "http://127.0.0.1:" + sim.port() + "/";
+            assertThat(printed).contains("listening on " + base)
+                    .contains("robot robot1 " + base + "robot1/robot_local_control/state")
+                    .contains("robot robot3 " + base + "robot3/robot_local_control/state")
+                    .contains("door  door1 " + base + "door1/door_controller/state");
+            assertThat(sim.config().rules().seed()).isEqualTo(5);
+        } finally {
+            sim.close();
+        }
+    }
+
+    @Test
+    void flagsReachTheConfiguration() throws Exception {
+        SimConfig c = ServeCommand.config(Flags.parse(new String[] {"--bind=0.0.0.0", "--speed", "100",
+            "--door-open-steps", "0", "--deadlock-steps", "9", "--fault", "latencyMs=20,dropRate=0.25",
+            "--fault", "robot2:offline=true"}, java.util.Set.of("bind", "speed", "door-open-steps",
+            "deadlock-steps", "fault"), java.util.Set.of()));
+        assertThat(c.bindAddress()).isEqualTo("0.0.0.0");
+        assertThat(c.port()).isEqualTo(ServeCommand.DEFAULT_PORT);
+        assertThat(c.stepPeriodNanos()).isEqualTo(5_000_000L);
+        assertThat(c.rules().doorOpenSteps()).isZero();
+        assertThat(c.rules().deadlockSteps()).isEqualTo(9);
+        assertThat(c.fleetFaults().latencyMs()).isEqualTo(20);
+        assertThat(c.fleetFaults().dropRate()).isEqualTo(0.25);
+        assertThat(c.robotFaults().get("robot2").offline()).isTrue();
+    }
+
+    @Test
+    void generateWritesAMapThatLoads() throws Exception {
+        Path file = dir.resolve("big.map");
+        assertThat(run("generate", "--width", "60", "--height", "30", "--robots", "40", "--carts", "80",
+                "--out", file.toString())).isZero();
+        WarehouseMap map = MapParser.parse(file);
+        assertThat(map.robots()).hasSize(40);
+        assertThat(map.carts()).hasSize(80);
+        assertThat(run("generate", "--width", "20", "--height", "20", "--robots", "5", "--carts", "5000")).isEqualTo(2);
+        assertThat(err()).contains("carts do not fit");
+    }
+}
