@@ -37,6 +37,7 @@ final class AsyncEventBus implements EventBus {
     private final String sourceNode;
     private final int queueCapacity;
     private final long overflowTimeoutNanos;
+    private final long idleNanos;
     private final Logger log;
 
     private final Object consumersLock = new Object();
@@ -44,13 +45,14 @@ final class AsyncEventBus implements EventBus {
     private volatile RouteTable routes = RouteTable.EMPTY;
     private final ConcurrentHashMap<String, EventTypeCounters> counters = new ConcurrentHashMap<>();
 
-    AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, Logger log) {
+    AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, long idleMicros, Logger log) {
         if (queueCapacity < 1) {
             throw new IllegalArgumentException("queue capacity must be at least 1, was " + queueCapacity);
         }
         this.sourceNode = sourceNode;
         this.queueCapacity = queueCapacity;
         this.overflowTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(0, overflowTimeoutMillis));
+        this.idleNanos = TimeUnit.MICROSECONDS.toNanos(Math.max(0, idleMicros));
         this.log = log;
     }
 
@@ -159,7 +161,7 @@ final class AsyncEventBus implements EventBus {
 
     /** Start delivering to a behaviour. */
     void addConsumer(ConsumerSpec spec) {
-        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, log);
+        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, idleNanos, log);
         channel.start();
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);

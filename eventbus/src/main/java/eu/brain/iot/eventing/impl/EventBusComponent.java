@@ -53,7 +53,7 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         this.bus = new AsyncEventBus(context.getProperty(Constants.FRAMEWORK_UUID), config.queue_capacity(),
-                config.overflow_timeout_ms(), log);
+                config.overflow_timeout_ms(), config.idle_spin_us(), log);
     }
 
     @Deactivate
