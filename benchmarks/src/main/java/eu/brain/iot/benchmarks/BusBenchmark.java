@@ -1,0 +1,72 @@
+package eu.brain.iot.benchmarks;
+
+import java.net.URISyntaxException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.List;
+
+import eu.brain.iot.benchmarks.spi.BusDriver;
+
+/**
+ * The event bus benchmark (issue 2, section 6): our bus, Felix EventAdmin (default and Timeout=0) and Aries
+ * typedevent, each in its own embedded Felix framework, one after the other in this process. Run it with
+ * {@code java -jar benchmarks/target/benchmarks.jar}; see the module's README.
+ */
+public final class BusBenchmark {
+
+    private static final long DRIVER_TIMEOUT_MILLIS = 20_000;
+
+    private BusBenchmark() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        Settings settings;
+        try {
+            settings = Settings.parse(args, defaultBundleDir());
+        } catch (BenchmarkException e) {
+            System.err.println(e.getMessage());
+            System.exit(2);
+            return;
+        }
+        Report report = new Report(System.out);
+        report.environment(settings);
+        List<ContenderResult> results = new ArrayList<>();
+        for (Contender contender : settings.contenders()) {
+            results.add(run(contender, settings));
+            System.gc(); // start the next contender without the previous one's garbage
+        }
+        report.table(results);
+        if (results.stream().anyMatch(r -> r.error() != null)) {
+            System.exit(1);
+        }
+    }
+
+    private static ContenderResult run(Contender contender, Settings settings) {
+        System.err.printf("== %s%n", contender.label());
+        try (EmbeddedFelix felix = EmbeddedFelix.start(contender, settings.bundleDir())) {
+            BusDriver driver = felix.awaitDriver(DRIVER_TIMEOUT_MILLIS);
+            BusMeasurements measure = new BusMeasurements(driver, settings);
+            BusMeasurements.Throughput eight = measure.throughput(8);
+            System.err.printf("   8 consumers: %,.0f events/s%n", eight.median());
+            BusMeasurements.Throughput one = measure.throughput(1);
+            System.err.printf("   1 consumer:  %,.0f events/s%n", one.median());
+            BusMeasurements.Latency latency = measure.latency(8);
+            System.err.printf("   latency (8 consumers): mean %.1f µs, p99 %.1f µs%n", latency.meanMicros(),
+                    latency.percentileMicros(99));
+            return new ContenderResult(contender, felix.describeBundles(), eight, one, latency, null);
+        } catch (Exception e) {
+            String message = e.getMessage() == null ? e.toString() : e.getMessage();
+            System.err.println("   FAILED: " + message);
+            return ContenderResult.failed(contender, message);
+        }
+    }
+
+    private static Path defaultBundleDir() {
+        try {
+            Path launcher = Path.of(BusBenchmark.class.getProtectionDomain().getCodeSource().getLocation().toURI());
+            return launcher.resolveSibling("bundles");
+        } catch (URISyntaxException | SecurityException e) {
+            return Path.of("benchmarks", "target", "bundles");
+        }
+    }
+}
