@@ -60,7 +60,8 @@ public final class StepEngine {
                 w.nearMisses++;
             }
             r.wasBlockedByRobot = blocked;
-            r.running = r.current != null && r.detect == 0 && !r.offline;
+            // between two queued missions a robot is still at work: "running" unless its sensor holds it
+            r.running = (r.current != null || !r.queue.isEmpty()) && r.detect == 0 && !r.offline;
         }
         deadlocks.afterStep(w);
     }
