@@ -1,0 +1,72 @@
+package eu.brain.iot.bip;
+
+import java.nio.file.Path;
+import java.util.List;
+
+import eu.brain.iot.bip.check.Checker;
+import eu.brain.iot.bip.check.Workspace;
+import eu.brain.iot.bip.diag.Diagnostics;
+import eu.brain.iot.bip.generate.Generator;
+import eu.brain.iot.bip.generate.JavaFile;
+
+/**
+ * The one entry point the CLI, the Maven plugin and the benchmark share: load files (and what they {@code use}),
+ * check them, generate Java.
+ */
+public final class Toolchain {
+
+    private final Workspace workspace;
+    private boolean checked;
+
+    private Toolchain(Workspace workspace) {
+        this.workspace = workspace;
+    }
+
+    public static Toolchain load(List<Path> files, List<Path> modelPath, Diagnostics diagnostics) {
+        Workspace ws = new Workspace(modelPath, diagnostics);
+        files.forEach(ws::addFile);
+        ws.resolveUses();
+        return new Toolchain(ws);
+    }
+
+    public static Toolchain of(Workspace workspace) {
+        return new Toolchain(workspace);
+    }
+
+    public Workspace workspace() {
+        return workspace;
+    }
+
+    public Diagnostics diagnostics() {
+        return workspace.diagnostics();
+    }
+
+    /** Checks every loaded package; @return whether there were no errors */
+    public boolean check() {
+        if (!checked) {
+            Checker.check(workspace);
+            checked = true;
+        }
+        return !diagnostics().hasErrors();
+    }
+
+    /** Checks, then generates the Java for the own packages in memory (nothing when there are errors). */
+    public List<JavaFile> generateInMemory(String root) {
+        if (!check()) {
+            return List.of();
+        }
+        return new Generator(workspace, root).generate();
+    }
+
+    /** Checks, then writes the Java under {@code output}; @return the number of files written */
+    public int generate(Path output, String root) {
+        List<JavaFile> files = generateInMemory(root);
+        if (diagnostics().hasErrors()) {
+            return 0;
+        }
+        for (JavaFile f : files) {
+            f.writeUnder(output, diagnostics());
+        }
+        return files.size();
+    }
+}

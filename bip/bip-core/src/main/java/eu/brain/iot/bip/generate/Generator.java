@@ -1,0 +1,87 @@
+package eu.brain.iot.bip.generate;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+
+import eu.brain.iot.bip.check.ExprTyper;
+import eu.brain.iot.bip.check.PackageScope;
+import eu.brain.iot.bip.check.ResolvedCall;
+import eu.brain.iot.bip.check.Workspace;
+import eu.brain.iot.bip.diag.Diagnostics;
+import eu.brain.iot.bip.model.AtomType;
+import eu.brain.iot.bip.model.BipPackage;
+import eu.brain.iot.bip.system.SystemModel;
+
+/**
+ * Generates Java for the workspace's own packages: per atom type a class and (when it calls any) an extern
+ * interface; when a root compound exists, per instantiated atom type of an own package an OSGi smart behaviour,
+ * and, when the root belongs to an own package, the system's event types. Expects a checked workspace.
+ */
+public final class Generator {
+
+    private final Workspace workspace;
+    private final String rootName;
+    private final Diagnostics diagnostics;
+
+    public Generator(Workspace workspace, String rootName) {
+        this.workspace = workspace;
+        this.rootName = rootName;
+        this.diagnostics = workspace.diagnostics();
+    }
+
+    /** The Java names of one atom type's generated classes. */
+    record AtomNames(String javaPackage, String atomClass, String externs, boolean hasExterns, String behaviour) {
+    }
+
+    public List<JavaFile> generate() {
+        List<JavaFile> files = new ArrayList<>();
+        Optional<SystemModel> system = SystemModel.build(workspace, rootName, diagnostics);
+        BusPlan plan = system.map(s -> new BusPlan(s, diagnostics)).orElse(null);
+        Map<AtomType, AtomNames> names = new HashMap<>();
+        for (BipPackage pkg : workspace.packages()) {
+            PackageScope scope = new PackageScope(workspace, pkg);
+            ExprTyper typer = new ExprTyper(scope, new Diagnostics());
+            String javaPackage = JavaNames.javaPackage(pkg);
+            for (AtomType atom : pkg.atomTypes()) {
+                List<ResolvedCall> calls = new ArrayList<>(AtomWriter.calls(atom, scope, typer));
+                if (plan != null) {
+                    calls.addAll(plan.connectorCalls(atom));
+                }
+                calls = ExternsWriter.distinct(calls, atom, diagnostics);
+                String base = JavaNames.type(atom.name());
+                AtomNames n = new AtomNames(javaPackage, base, base + "Externs", !calls.isEmpty(), base + "Behaviour");
+                names.put(atom, n);
+                if (!workspace.isOwn(pkg.name())) {
+                    continue;
+                }
+                files.add(new JavaFile(javaPackage, n.atomClass(),
+                        new AtomWriter(atom, scope, typer, n.atomClass(), n.externs()).write(javaPackage, n.hasExterns())));
+                if (n.hasExterns()) {
+                    files.add(new JavaFile(javaPackage, n.externs(),
+                            ExternsWriter.write(javaPackage, n.externs(), atom, calls, scope)));
+                }
+            }
+        }
+        if (plan != null && !diagnostics.hasErrors()) {
+            String eventsPackage = JavaNames.javaPackage(system.get().rootPackage());
+            EventsWriter events = new EventsWriter(plan, eventsPackage);
+            if (workspace.isOwn(system.get().rootPackage().name())) {
+                files.addAll(events.write());
+            }
+            for (BipPackage pkg : workspace.ownPackages()) {
+                for (AtomType atom : pkg.atomTypes()) {
+                    if (plan.instances(atom).isEmpty()) {
+                        continue;
+                    }
+                    AtomNames n = names.get(atom);
+                    String source = new BehaviourWriter(plan, atom, n, events).write();
+                    files.add(new JavaFile(n.javaPackage(), n.behaviour(), source));
+                }
+            }
+        }
+        return diagnostics.hasErrors() ? List.of() : files;
+    }
+}

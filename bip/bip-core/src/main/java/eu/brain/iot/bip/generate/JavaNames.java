@@ -1,0 +1,109 @@
+package eu.brain.iot.bip.generate;
+
+import java.util.Locale;
+import java.util.Set;
+
+import eu.brain.iot.bip.check.Type;
+import eu.brain.iot.bip.check.PackageScope;
+import eu.brain.iot.bip.model.Annotation;
+import eu.brain.iot.bip.model.BipPackage;
+
+/** How BIP names become Java names. */
+public final class JavaNames {
+
+    static final Set<String> KEYWORDS = Set.of("abstract", "assert", "boolean", "break", "byte", "case", "catch",
+            "char", "class", "const", "continue", "default", "do", "double", "else", "enum", "extends", "final",
+            "finally", "float", "for", "goto", "if", "implements", "import", "instanceof", "int", "interface", "long",
+            "native", "new", "package", "private", "protected", "public", "return", "short", "static", "strictfp",
+            "super", "switch", "synchronized", "this", "throw", "throws", "transient", "try", "void", "volatile",
+            "while", "true", "false", "null", "var", "record", "yield", "sealed", "permits", "_");
+
+    private JavaNames() {
+    }
+
+    /** A BIP name usable as a Java identifier: unchanged unless it is a Java keyword (then suffixed with _). */
+    public static String id(String bipName) {
+        return KEYWORDS.contains(bipName) ? bipName + "_" : bipName;
+    }
+
+    /** {@code Robot_behavior} becomes {@code RobotBehavior}, {@code connector_type_door} {@code ConnectorTypeDoor}. */
+    public static String type(String bipName) {
+        String simple = bipName.substring(bipName.lastIndexOf('.') + 1);
+        StringBuilder out = new StringBuilder();
+        boolean upper = true;
+        for (char c : simple.toCharArray()) {
+            if (c == '_') {
+                upper = true;
+            } else {
+                out.append(upper ? Character.toUpperCase(c) : c);
+                upper = false;
+            }
+        }
+        String s = out.length() == 0 ? "X" : out.toString();
+        return Character.isJavaIdentifierStart(s.charAt(0)) ? s : "X" + s;
+    }
+
+    /** {@code unloadLocation} becomes {@code UnloadLocation} (for method names like onUnloadLocation). */
+    public static String capital(String bipName) {
+        String t = type(bipName);
+        return t;
+    }
+
+    /** {@code p1} and {@code position} become {@code p1Position}. */
+    public static String field(String prefix, String name) {
+        return prefix + Character.toUpperCase(name.charAt(0)) + name.substring(1);
+    }
+
+    /** The Java package of a BIP package: {@code @java(package="...")}, else its name in lower case. */
+    public static String javaPackage(BipPackage pkg) {
+        return Annotation.find(pkg.annotations(), "java", "package")
+                .orElse(pkg.name().toLowerCase(Locale.ROOT).replaceAll("[^a-z0-9_.]", "_"));
+    }
+
+    /** The Java type of a data type. */
+    public static String javaType(Type t, PackageScope scope) {
+        return switch (t.kind()) {
+            case INT -> "int";
+            case FLOAT -> "double";
+            case BOOL -> "boolean";
+            case STRING -> "String";
+            case VOID -> "void";
+            case EXTERN -> scope.externType(t.externName()).map(x -> x.backendName())
+                    .filter(b -> b != null && b.matches("[A-Za-z_][\\w.]*(<[\\w.<>, ?]*>)?")).orElse("Object");
+            case ERROR -> "Object";
+        };
+    }
+
+    /** The Java type for use as a generic argument or in a list. */
+    public static String boxed(String javaType) {
+        return switch (javaType) {
+            case "int" -> "Integer";
+            case "double" -> "Double";
+            case "boolean" -> "Boolean";
+            default -> javaType;
+        };
+    }
+
+    /** A Java string literal. */
+    public static String literal(String s) {
+        StringBuilder q = new StringBuilder("\"");
+        for (char c : s.toCharArray()) {
+            switch (c) {
+                case '"' -> q.append("\\\"");
+                case '\\' -> q.append("\\\\");
+                case '\n' -> q.append("\\n");
+                case '\t' -> q.append("\\t");
+                case '\r' -> q.append("\\r");
+                case '\0' -> q.append("\\0");
+                default -> {
+                    if (c < 0x20 || c > 0x7e) {
+                        q.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        q.append(c);
+                    }
+                }
+            }
+        }
+        return q.append('"').toString();
+    }
+}
