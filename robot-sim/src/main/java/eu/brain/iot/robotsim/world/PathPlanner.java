@@ -1,26 +1,36 @@
 package eu.brain.iot.robotsim.world;
 
+import java.util.Arrays;
+
 /**
- * Breadth-first shortest paths over the four-neighbour grid, as the robots plan them themselves. Walls are never
- * crossed; doors count as passable (a robot waits in front of a closed door); other robots are ignored (the front
- * sensor deals with them); a robot carrying a cart cannot pass under another cart. Neighbours are tried in the
- * order N, E, S, W so paths are deterministic. Reuses its arrays: owned by the world's owner thread.
+ * Shortest paths over the four-neighbour grid, as the robots plan them themselves: A* with the Manhattan distance
+ * (exact shortest paths, and far fewer cells visited than breadth-first search when a thousand robots plan at
+ * once). Walls are never crossed; doors count as passable (a robot waits in front of a closed door); other robots
+ * are ignored (the front sensor deals with them); a robot carrying a cart cannot pass under another cart. Ties are
+ * broken the same way every time, so paths are deterministic. Reuses its arrays: owned by the world's owner thread.
  */
 final class PathPlanner {
     private static final Heading[] ORDER = Heading.values();
 
     private final WarehouseMap map;
     private final int[] seen;
+    private final int[] closed;
+    private final int[] cost;
     private final int[] previous;
-    private final int[] queue;
+    private long[] heapKeys;
+    private int[] heapCells;
+    private int heapSize;
     private int generation;
 
     PathPlanner(WarehouseMap map) {
         this.map = map;
         int cells = map.width() * map.height();
         seen = new int[cells];
+        closed = new int[cells];
+        cost = new int[cells];
         previous = new int[cells];
-        queue = new int[cells];
+        heapKeys = new long[Math.min(cells, 1 << 16) + 16];
+        heapCells = new int[heapKeys.length];
     }
 
     /**
@@ -37,15 +47,25 @@ final class PathPlanner {
             return null;
         }
         int width = map.width();
+        int goalX = goal % width;
+        int goalY = goal / width;
         int stamp = ++generation;
-        int head = 0;
-        int tail = 0;
-        queue[tail++] = start;
+        heapSize = 0;
         seen[start] = stamp;
-        while (head < tail) {
-            int cell = queue[head++];
+        cost[start] = 0;
+        push(start, distance(start % width, start / width, goalX, goalY), 0);
+        while (heapSize > 0) {
+            int cell = pop();
+            if (closed[cell] == stamp) {
+                continue;
+            }
+            closed[cell] = stamp;
+            if (cell == goal) {
+                return trace(start, goal);
+            }
             int cx = cell % width;
             int cy = cell / width;
+            int nextCost = cost[cell] + 1;
             for (Heading h : ORDER) {
                 int nx = cx + h.dx();
                 int ny = cy + h.dy();
@@ -53,18 +73,22 @@ final class PathPlanner {
                     continue;
                 }
                 int next = ny * width + nx;
-                if (seen[next] == stamp || !map.terrain(next).passable() || (loaded && cartAt[next] >= 0)) {
+                if (closed[next] == stamp || (seen[next] == stamp && cost[next] <= nextCost)
+                        || !map.terrain(next).passable() || (loaded && cartAt[next] >= 0)) {
                     continue;
                 }
                 seen[next] = stamp;
+                cost[next] = nextCost;
                 previous[next] = cell;
-                if (next == goal) {
-                    return trace(start, goal);
-                }
-                queue[tail++] = next;
+                int remaining = distance(nx, ny, goalX, goalY);
+                push(next, nextCost + remaining, remaining);
             }
         }
         return null;
+    }
+
+    private static int distance(int x, int y, int goalX, int goalY) {
+        return Math.abs(x - goalX) + Math.abs(y - goalY);
     }
 
     private int[] trace(int start, int goal) {
@@ -78,5 +102,51 @@ final class PathPlanner {
             path[--i] = c;
         }
         return path;
+    }
+
+    /** Min-heap on (estimated total, then remaining distance): prefers cells closer to the goal among equals. */
+    private void push(int cell, int estimate, int remaining) {
+        if (heapSize == heapKeys.length) {
+            heapKeys = Arrays.copyOf(heapKeys, heapSize * 2);
+            heapCells = Arrays.copyOf(heapCells, heapSize * 2);
+        }
+        long key = ((long) estimate << 32) | remaining;
+        int i = heapSize++;
+        while (i > 0) {
+            int parent = (i - 1) >>> 1;
+            if (heapKeys[parent] <= key) {
+                break;
+            }
+            heapKeys[i] = heapKeys[parent];
+            heapCells[i] = heapCells[parent];
+            i = parent;
+        }
+        heapKeys[i] = key;
+        heapCells[i] = cell;
+    }
+
+    private int pop() {
+        int top = heapCells[0];
+        long key = heapKeys[--heapSize];
+        int cell = heapCells[heapSize];
+        int i = 0;
+        while (true) {
+            int child = 2 * i + 1;
+            if (child >= heapSize) {
+                break;
+            }
+            if (child + 1 < heapSize && heapKeys[child + 1] < heapKeys[child]) {
+                child++;
+            }
+            if (heapKeys[child] >= key) {
+                break;
+            }
+            heapKeys[i] = heapKeys[child];
+            heapCells[i] = heapCells[child];
+            i = child;
+        }
+        heapKeys[i] = key;
+        heapCells[i] = cell;
+        return top;
     }
 }
