@@ -23,8 +23,19 @@ public final class Toolchain {
     }
 
     public static Toolchain load(List<Path> files, List<Path> modelPath, Diagnostics diagnostics) {
+        return load(files, modelPath, diagnostics, null);
+    }
+
+    /**
+     * Loads files and what they use; a qualified {@code root} ({@code Package.Compound}) also loads that package
+     * from the model path, so a module can generate its behaviours for a system declared elsewhere.
+     */
+    public static Toolchain load(List<Path> files, List<Path> modelPath, Diagnostics diagnostics, String root) {
         Workspace ws = new Workspace(modelPath, diagnostics);
         files.forEach(ws::addFile);
+        if (root != null && root.lastIndexOf('.') > 0) {
+            ws.require(root.substring(0, root.lastIndexOf('.')));
+        }
         ws.resolveUses();
         return new Toolchain(ws);
     }

@@ -66,9 +66,17 @@ public final class Workspace {
         own.add(pkg.name());
     }
 
-    /** Loads every package named by a {@code use}, transitively, from the model path. */
+    private final List<BipPackage.Use> required = new ArrayList<>();
+
+    /** Asks for a package from the model path as if some file used it (e.g. the package of a named root). */
+    public void require(String packageName) {
+        required.add(new BipPackage.Use(new Pos("<root compound>", 1, 1), packageName));
+    }
+
+    /** Loads every package named by a {@code use} (or required), transitively, from the model path. */
     public void resolveUses() {
         List<BipPackage> pending = new ArrayList<>(packages.values());
+        pending.add(new BipPackage(Pos.NONE, List.of(), "<required>", required, List.of()));
         while (!pending.isEmpty()) {
             BipPackage pkg = pending.remove(0);
             for (BipPackage.Use use : pkg.uses()) {

@@ -86,7 +86,7 @@ public final class Main {
             }
         }
         Diagnostics diagnostics = new Diagnostics();
-        Toolchain tool = Toolchain.load(files, includes, diagnostics);
+        Toolchain tool = Toolchain.load(files, includes, diagnostics, root);
         int code;
         switch (command) {
             case "check" -> {

@@ -79,7 +79,7 @@ final class AtomWriter {
         Code c = new Code();
         c.line("package " + javaPackage + ";").blank();
         c.line("/**");
-        c.line(" * Atom type {@code " + atom.name() + "} of " + atom.pos().file() + ", generated: do not edit.");
+        c.line(" * Atom type {@code " + atom.name() + "} of " + JavaNames.fileName(atom.pos()) + ", generated: do not edit.");
         c.line(" * <p>");
         c.line(" * Not thread-safe: its owner (the generated behaviour) calls it under one lock.");
         c.line(" */");

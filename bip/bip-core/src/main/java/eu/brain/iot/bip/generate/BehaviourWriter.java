@@ -90,7 +90,7 @@ final class BehaviourWriter {
         c.line("@eu.brain.iot.eventing.annotation.SmartBehaviourDefinition(consumed = {"
                 + consumed.stream().map(x -> x + ".class").collect(Collectors.joining(", ")) + "},");
         c.line("        name = " + JavaNames.literal(atom.name()) + ", author = \"BIP generator\",");
-        c.line("        description = " + JavaNames.literal("Atom type " + atom.name() + " of " + atom.pos().file()) + ")");
+        c.line("        description = " + JavaNames.literal("Atom type " + atom.name() + " of " + JavaNames.fileName(atom.pos())) + ")");
         c.open("public final class " + cls + " implements eu.brain.iot.eventing.api.SmartBehaviour<eu.brain.iot.eventing.api.BrainIoTEvent>");
         c.blank();
         c.line("private static final System.Logger LOG = System.getLogger(" + cls + ".class.getName());");
@@ -521,7 +521,7 @@ final class BehaviourWriter {
         for (int m = 0; m < candidates.size(); m++) {
             long mask = candidates.get(m);
             List<String> members = Interactions.names(t, mask);
-            c.open("case " + m + ": {");
+            c.open("case " + m + ":");
             for (int q = 0; q < t.ports().size(); q++) {
                 if (q != self && (mask & (1L << q)) != 0) {
                     c.open("if (offers[" + q + "] == null)").line("return false;").close();

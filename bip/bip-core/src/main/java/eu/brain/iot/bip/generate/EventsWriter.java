@@ -131,7 +131,7 @@ final class EventsWriter {
         Code c = header(offer
                 ? "A component's offer to take part in an interaction of connector type {@code " + t.name() + "}:\n"
                         + "its port is ready and it waits for the coordinator's {@link " + JavaNames.type(t.name()) + "}."
-                : "An interaction of connector type {@code " + t.name() + "} (" + t.pos().file() + ") has fired.\n"
+                : "An interaction of connector type {@code " + t.name() + "} (" + JavaNames.fileName(t.pos()) + ") has fired.\n"
                         + "Each participant reads the data of its own port parameter (after the 'down' transfer).", name);
         c.line("/** The connector instance, e.g. {@code Connector2}. */");
         c.line("public String connector;");

@@ -39,7 +39,7 @@ final class ExternsWriter {
         Code c = new Code();
         c.line("package " + javaPackage + ";").blank();
         c.line("/**");
-        c.line(" * The extern functions atom type {@code " + atom.name() + "} calls (" + atom.pos().file() + "),");
+        c.line(" * The extern functions atom type {@code " + atom.name() + "} calls (" + JavaNames.fileName(atom.pos()) + "),");
         c.line(" * generated: implement this interface by hand and register it as an OSGi service.");
         c.line(" * Calls come from the behaviour's lock, one at a time per behaviour.");
         c.line(" */");

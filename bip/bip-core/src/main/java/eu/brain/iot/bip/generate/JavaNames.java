@@ -84,6 +84,12 @@ public final class JavaNames {
         };
     }
 
+    /** @return the file name of a position, without its directories (for generated comments) */
+    public static String fileName(eu.brain.iot.bip.model.Pos pos) {
+        String f = pos.file().replace('\\', '/');
+        return f.substring(f.lastIndexOf('/') + 1);
+    }
+
     /** A Java string literal. */
     public static String literal(String s) {
         StringBuilder q = new StringBuilder("\"");
