@@ -71,7 +71,7 @@ public final class SimConfig {
         return manualStep;
     }
 
-    /** Netty I/O threads; 0 lets Netty choose (twice the cores). */
+    /** Netty I/O threads; 0 means one per core. */
     public int ioThreads() {
         return ioThreads;
     }
