@@ -18,6 +18,11 @@ import eu.brain.iot.bip.parser.Token.Kind;
  */
 final class ActionParser {
 
+    /** Words that end or structure an item and so can never be read as a name inside an expression. */
+    static final java.util.Set<String> NOT_NAMES = java.util.Set.of("end", "package", "use", "extern", "const",
+            "define", "component", "connector", "compound", "atom", "place", "places", "initial", "internal", "on",
+            "from", "provided", "do", "priority", "if", "then", "else", "fi", "export");
+
     private final TokenCursor in;
 
     ActionParser(TokenCursor in) {
@@ -169,7 +174,8 @@ final class ActionParser {
 
     private static boolean startsOperand(Token t) {
         return switch (t.kind()) {
-            case IDENT, INT, FLOAT, STRING, LPAREN, BANG, MINUS, PLUS, TILDE -> true;
+            case IDENT -> !NOT_NAMES.contains(t.text());
+            case INT, FLOAT, STRING, LPAREN, BANG, MINUS, PLUS, TILDE -> true;
             default -> false;
         };
     }
@@ -196,6 +202,9 @@ final class ActionParser {
                 return inner;
             }
             case IDENT -> {
+                if (NOT_NAMES.contains(t.text())) {
+                    throw in.fail("expected an expression (a number, string, name, call or '('), found " + t.describe());
+                }
                 in.next();
                 if (t.text().equals("true") || t.text().equals("false")) {
                     return new Expr.BoolLit(t.pos(), t.text().equals("true"));

@@ -53,12 +53,13 @@ final class BodyParser {
 
     /** Runs {@code item}; on a syntax error skips to the next item start. @return false at the type's end */
     private boolean item(Set<String> itemWords, Runnable item) {
+        int start = in.mark();
         try {
             item.run();
         } catch (SyntaxError e) {
             in.resetDepth();
             in.syncUntil(() -> in.peek().is(Kind.IDENT) && itemWords.contains(in.peek().text())
-                    || decls.atDeclarationStart(0), true);
+                    || decls.atDeclarationStart(0), true, start);
         }
         return true;
     }

@@ -81,11 +81,12 @@ public final class Parser {
                 in.next();
                 continue;
             }
+            int start = in.mark();
             try {
                 declaration(decls);
             } catch (SyntaxError e) {
                 in.resetDepth();
-                syncToDeclaration();
+                in.syncUntil(() -> atDeclarationStart(0) || in.atWord("end"), true, start);
             }
         }
         if (in.atEnd()) {

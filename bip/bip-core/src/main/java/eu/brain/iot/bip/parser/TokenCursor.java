@@ -53,6 +53,11 @@ final class TokenCursor {
         return peek().pos();
     }
 
+    /** @return the index of the current token, to tell later whether an item consumed anything */
+    int mark() {
+        return index;
+    }
+
     boolean atEnd() {
         return peek().is(Kind.EOF);
     }
@@ -187,7 +192,16 @@ final class TokenCursor {
 
     /** Like {@link #syncTo(Set)}, stopping where {@code stop} holds (or at an annotation when {@code atAnnotation}). */
     void syncUntil(java.util.function.BooleanSupplier stop, boolean atAnnotation) {
-        int start = index;
+        syncUntil(stop, atAnnotation, index);
+    }
+
+    /**
+     * Like {@link #syncUntil(java.util.function.BooleanSupplier, boolean)}; when the failed item (which began at
+     * {@code itemStart}) consumed tokens, the current token may itself be where parsing resumes (e.g. the 'atom'
+     * after a port type missing its ')').
+     */
+    void syncUntil(java.util.function.BooleanSupplier stop, boolean atAnnotation, int itemStart) {
+        int start = index > itemStart ? index - 1 : index;
         int nesting = 0;
         while (!atEnd()) {
             Token t = peek();
