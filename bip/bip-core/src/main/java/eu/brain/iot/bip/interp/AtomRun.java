@@ -209,7 +209,7 @@ public final class AtomRun {
         @Override
         public Object call(ResolvedCall call, Object[] args) {
             List<String> paramTypes = call.params().stream().map(Type::toString).toList();
-            return externs.call(call.name(), paramTypes, args);
+            return externs.call(call.name(), paramTypes, call.result().toString(), args);
         }
     }
 }
