@@ -219,6 +219,9 @@ public final class Parser {
         if (!in.at(Kind.RPAREN)) {
             do {
                 Pos pos = in.pos();
+                if (atDeclarationStart(0)) {
+                    throw in.fail("expected a parameter type of " + owner + ", found " + in.peek().describe());
+                }
                 TypeRef type = type("a parameter type of " + owner);
                 String name = null;
                 if (in.at(Kind.IDENT)) {
