@@ -64,12 +64,14 @@ final class BehaviourWriter {
     String write() {
         Set<String> consumed = new LinkedHashSet<>();
         for (BusPlan.PortPlan p : ports) {
-            switch (p.role()) {
-                case EXTERNAL -> consumed.add(events.externalClass(atom, p.port().name()));
-                case RECEIVER, PARTICIPANT -> consumed.add(events.eventClass(p.connector()));
-                case COORDINATOR -> consumed.add(events.offerClass(p.connector()));
-                default -> {
-                }
+            if (p.role() == BusPlan.Role.EXTERNAL) {
+                consumed.add(events.externalClass(atom, p.port().name()));
+            }
+            if (p.has(BusPlan.Role.RECEIVER) || p.has(BusPlan.Role.PARTICIPANT)) {
+                consumed.add(events.eventClass(p.connector()));
+            }
+            if (p.has(BusPlan.Role.COORDINATOR)) {
+                consumed.add(events.offerClass(p.connector()));
             }
         }
         String cls = names.behaviour();
@@ -105,6 +107,9 @@ final class BehaviourWriter {
                         .collect(Collectors.joining(", ")) + "};");
                 c.line("private static final int[] PARAM_" + suffix(p) + " = {" + java.util.Arrays
                         .stream(p.paramByInstance()).mapToObj(Integer::toString).collect(Collectors.joining(", ")) + "};");
+                c.line("private static final int[] ROLE_" + suffix(p) + " = {" + java.util.Arrays
+                        .stream(p.roleByInstance()).map(r -> Integer.toString(roleCode(r)))
+                        .collect(Collectors.joining(", ")) + "};");
             }
         }
         c.blank();
@@ -118,7 +123,7 @@ final class BehaviourWriter {
         c.line("/** Per instance: the connector it offered to and now waits for, or null. */");
         c.line("private final String[] waiting;");
         for (BusPlan.PortPlan p : ports) {
-            if (p.role() == BusPlan.Role.COORDINATOR) {
+            if (p.has(BusPlan.Role.COORDINATOR)) {
                 c.line("/** Per instance and port parameter: the offers collected for port " + p.port().name() + ". */");
                 c.line("private final " + events.offerClass(p.connector()) + "[][] offers" + suffix(p) + ";");
                 c.line("private final int[] rotation" + suffix(p) + ";");
@@ -129,14 +134,23 @@ final class BehaviourWriter {
         notifyMethod(c);
         run(c);
         for (BusPlan.PortPlan p : ports) {
-            switch (p.role()) {
-                case EXTERNAL -> external(c, p);
-                case INITIATOR -> initiate(c, p);
-                case RECEIVER -> receive(c, p);
-                case PARTICIPANT -> participate(c, p);
-                case COORDINATOR -> coordinate(c, p);
-                default -> {
-                }
+            if (p.role() == BusPlan.Role.EXTERNAL) {
+                external(c, p);
+            }
+            if (p.role() == BusPlan.Role.BOUND) {
+                act(c, p);
+            }
+            if (p.has(BusPlan.Role.INITIATOR)) {
+                initiate(c, p);
+            }
+            if (p.has(BusPlan.Role.RECEIVER)) {
+                receive(c, p);
+            }
+            if (p.has(BusPlan.Role.PARTICIPANT)) {
+                participate(c, p);
+            }
+            if (p.has(BusPlan.Role.COORDINATOR)) {
+                coordinate(c, p);
             }
         }
         helpers(c);
@@ -165,7 +179,7 @@ final class BehaviourWriter {
         }
         c.line("this.waiting = new String[COMPONENTS.length];");
         for (BusPlan.PortPlan p : ports) {
-            if (p.role() == BusPlan.Role.COORDINATOR) {
+            if (p.has(BusPlan.Role.COORDINATOR)) {
                 c.line("this.offers" + suffix(p) + " = new " + events.offerClass(p.connector()) + "[COMPONENTS.length]["
                         + p.connector().ports().size() + "];");
                 c.line("this.rotation" + suffix(p) + " = new int[COMPONENTS.length];");
@@ -214,35 +228,32 @@ final class BehaviourWriter {
     private void notifyMethod(Code c) {
         c.line("@Override");
         c.open("public synchronized void notify(eu.brain.iot.eventing.api.BrainIoTEvent event)");
-        Set<String> handled = new LinkedHashSet<>();
-        boolean first = true;
+        java.util.Map<String, List<String>> handlers = new java.util.LinkedHashMap<>();
         for (BusPlan.PortPlan p : ports) {
-            String type = switch (p.role()) {
-                case EXTERNAL -> events.externalClass(atom, p.port().name());
-                case RECEIVER, PARTICIPANT -> events.eventClass(p.connector());
-                case COORDINATOR -> events.offerClass(p.connector());
-                default -> null;
-            };
-            if (type == null || !handled.add(type)) {
-                continue;
+            if (p.role() == BusPlan.Role.EXTERNAL) {
+                handlers.computeIfAbsent(events.externalClass(atom, p.port().name()), k -> new ArrayList<>())
+                        .add("on" + suffix(p));
             }
+            if (p.has(BusPlan.Role.RECEIVER)) {
+                handlers.computeIfAbsent(events.eventClass(p.connector()), k -> new ArrayList<>()).add("receive" + suffix(p));
+            }
+            if (p.has(BusPlan.Role.PARTICIPANT)) {
+                handlers.computeIfAbsent(events.eventClass(p.connector()), k -> new ArrayList<>()).add("complete" + suffix(p));
+            }
+            if (p.has(BusPlan.Role.COORDINATOR)) {
+                handlers.computeIfAbsent(events.offerClass(p.connector()), k -> new ArrayList<>()).add("collect" + suffix(p));
+            }
+        }
+        boolean first = true;
+        for (var h : handlers.entrySet()) {
+            String type = h.getKey();
             if (first) {
                 c.open("if (event instanceof " + type + ")");
             } else {
                 c.middle("} else if (event instanceof " + type + ") {");
             }
             c.line(type + " e = (" + type + ") event;");
-            for (BusPlan.PortPlan q : ports) {
-                String qType = switch (q.role()) {
-                    case EXTERNAL -> events.externalClass(atom, q.port().name());
-                    case RECEIVER, PARTICIPANT -> events.eventClass(q.connector());
-                    case COORDINATOR -> events.offerClass(q.connector());
-                    default -> null;
-                };
-                if (type.equals(qType)) {
-                    c.line("on" + suffix(q) + "(e);");
-                }
-            }
+            h.getValue().forEach(m -> c.line(m + "(e);"));
             first = false;
         }
         if (first) {
@@ -270,13 +281,11 @@ final class BehaviourWriter {
         c.open("switch (p)");
         for (BusPlan.PortPlan p : ports) {
             String id = JavaNames.id(p.port().name());
-            switch (p.role()) {
-                case LOCAL -> c.line("case " + id + ": acted = fire(i, p); break;");
-                case INITIATOR -> c.line("case " + id + ": acted = initiate" + suffix(p) + "(i); break;");
-                case PARTICIPANT -> c.line("case " + id + ": acted = offer" + suffix(p) + "(i); break;");
-                case COORDINATOR -> c.line("case " + id + ": acted = coordinate" + suffix(p) + "(i); break;");
-                default -> {
-                }
+            if (p.role() == BusPlan.Role.LOCAL) {
+                c.line("case " + id + ": acted = fire(i, p); break;");
+            } else if (p.role() == BusPlan.Role.BOUND && (p.has(BusPlan.Role.INITIATOR) || p.has(BusPlan.Role.PARTICIPANT)
+                    || p.has(BusPlan.Role.COORDINATOR))) {
+                c.line("case " + id + ": acted = act" + suffix(p) + "(i); break;");
             }
         }
         c.line("default: break;");
@@ -333,7 +342,7 @@ final class BehaviourWriter {
         c.line(type + " e = new " + type + "();");
         c.line("e.connector = CONNECTOR_" + suffix(p) + "[i];");
         c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p.paramByInstance(), p.connectorByInstance())) {
+        for (int j : distinct(p, BusPlan.Role.INITIATOR)) {
             String jName = t.ports().get(j).name();
             c.open("case " + j + ":");
             c.line("e.initiator = " + JavaNames.literal(jName) + ";");
@@ -365,14 +374,15 @@ final class BehaviourWriter {
         String type = events.eventClass(t);
         BusPlan.ConnectorPlan cp = plan.plan(t);
         c.line("/** A broadcast of " + t.name() + " arrived: synchron port " + p.port().name() + " joins if ready. */");
-        c.open("private void on" + suffix(p) + "(" + type + " e)");
+        c.open("private void receive" + suffix(p) + "(" + type + " e)");
         c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (e.connector == null || !e.connector.equals(CONNECTOR_" + suffix(p) + "[i]) || waiting[i] != null"
+        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.RECEIVER) + " || e.connector == null"
+                + " || !e.connector.equals(CONNECTOR_" + suffix(p) + "[i]) || waiting[i] != null"
                 + " || !atoms[i].enabledPorts().contains(" + port(p) + "))").line("continue;").close();
         c.line("String self = " + JavaNames.literal("") + ";");
         c.line("boolean joins = false;");
         c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int r : distinct(p.paramByInstance(), p.connectorByInstance())) {
+        for (int r : distinct(p, BusPlan.Role.RECEIVER)) {
             String rName = t.ports().get(r).name();
             c.open("case " + r + ":");
             c.line("self = " + JavaNames.literal(rName) + ";");
@@ -430,7 +440,7 @@ final class BehaviourWriter {
         c.line("o.connector = CONNECTOR_" + suffix(p) + "[i];");
         c.line("o.component = COMPONENTS[i];");
         c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p.paramByInstance(), p.connectorByInstance())) {
+        for (int j : distinct(p, BusPlan.Role.PARTICIPANT)) {
             String jName = t.ports().get(j).name();
             c.open("case " + j + ":");
             c.line("o.port = " + JavaNames.literal(jName) + ";");
@@ -446,12 +456,13 @@ final class BehaviourWriter {
         c.line("return true;");
         c.close().blank();
         c.line("/** The coordinator of " + t.name() + " fired: take part if this instance was in the interaction. */");
-        c.open("private void on" + suffix(p) + "(" + type + " e)");
+        c.open("private void complete" + suffix(p) + "(" + type + " e)");
         c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (e.connector == null || !e.connector.equals(waiting[i]) || !e.connector.equals(CONNECTOR_"
-                + suffix(p) + "[i]))").line("continue;").close();
+        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.PARTICIPANT) + " || e.connector == null"
+                + " || !e.connector.equals(waiting[i]) || !e.connector.equals(CONNECTOR_" + suffix(p) + "[i]))")
+                .line("continue;").close();
         c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p.paramByInstance(), p.connectorByInstance())) {
+        for (int j : distinct(p, BusPlan.Role.PARTICIPANT)) {
             String jName = t.ports().get(j).name();
             c.open("case " + j + ":");
             c.open("if (!e.participants.contains(" + JavaNames.literal(jName) + "))").line("continue;").close();
@@ -477,9 +488,10 @@ final class BehaviourWriter {
         String selfName = t.ports().get(self).name();
         List<Long> candidates = cp.interactions().stream().filter(m -> (m & (1L << self)) != 0).toList();
         c.line("/** An offer for " + t.name() + " arrived: keep it (the latest per port) and see whether to fire. */");
-        c.open("private void on" + suffix(p) + "(" + offer + " o)");
+        c.open("private void collect" + suffix(p) + "(" + offer + " o)");
         c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (o.connector == null || !o.connector.equals(CONNECTOR_" + suffix(p) + "[i]))").line("continue;").close();
+        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.COORDINATOR) + " || o.connector == null"
+                + " || !o.connector.equals(CONNECTOR_" + suffix(p) + "[i]))").line("continue;").close();
         c.line("int param = paramIndex" + suffix(p) + "(o.port);");
         c.open("if (param < 0 || param == " + self + ")");
         c.line("LOG.log(System.Logger.Level.WARNING, \"offer for unknown port {0} of {1} ignored\", o.port, o.connector);");
@@ -564,14 +576,46 @@ final class BehaviourWriter {
         c.close().close().blank();
     }
 
-    private static List<Integer> distinct(int[] params, String[] connectors) {
+    /** @return the connector parameters the instances playing {@code role} are bound to */
+    private static List<Integer> distinct(BusPlan.PortPlan p, BusPlan.Role role) {
         Set<Integer> set = new LinkedHashSet<>();
-        for (int i = 0; i < params.length; i++) {
-            if (connectors[i] != null) {
-                set.add(params[i]);
+        for (int i = 0; i < p.paramByInstance().length; i++) {
+            if (p.roleByInstance()[i] == role) {
+                set.add(p.paramByInstance()[i]);
             }
         }
         return new ArrayList<>(set);
+    }
+
+    static int roleCode(BusPlan.Role role) {
+        return role == null ? 0 : switch (role) {
+            case INITIATOR -> 1;
+            case RECEIVER -> 2;
+            case PARTICIPANT -> 3;
+            case COORDINATOR -> 4;
+            default -> 0;
+        };
+    }
+
+    /** What a bound port does on its own, by the instance's role. */
+    private void act(Code c, BusPlan.PortPlan p) {
+        if (!(p.has(BusPlan.Role.INITIATOR) || p.has(BusPlan.Role.PARTICIPANT) || p.has(BusPlan.Role.COORDINATOR))) {
+            return;
+        }
+        c.line("/** Port " + p.port().name() + " is enabled: what instance i does depends on its part in the connector. */");
+        c.open("private boolean act" + suffix(p) + "(int i)");
+        c.open("switch (ROLE_" + suffix(p) + "[i])");
+        if (p.has(BusPlan.Role.INITIATOR)) {
+            c.line("case " + roleCode(BusPlan.Role.INITIATOR) + ": return initiate" + suffix(p) + "(i);");
+        }
+        if (p.has(BusPlan.Role.PARTICIPANT)) {
+            c.line("case " + roleCode(BusPlan.Role.PARTICIPANT) + ": return offer" + suffix(p) + "(i);");
+        }
+        if (p.has(BusPlan.Role.COORDINATOR)) {
+            c.line("case " + roleCode(BusPlan.Role.COORDINATOR) + ": return coordinate" + suffix(p) + "(i);");
+        }
+        c.line("default: return false;");
+        c.close().close().blank();
     }
 
     private void helpers(Code c) {

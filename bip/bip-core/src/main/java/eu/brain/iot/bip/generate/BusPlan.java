@@ -46,6 +46,8 @@ final class BusPlan {
         LOCAL,
         /** exported, bound to no connector: fired by its own event type from the environment */
         EXTERNAL,
+        /** bound to a connector: each instance has one of the roles below (or none, if unconnected) */
+        BOUND,
         INITIATOR, RECEIVER, PARTICIPANT, COORDINATOR
     }
 
@@ -53,9 +55,17 @@ final class BusPlan {
     record ConnectorPlan(ConnectorType type, Mode mode, long initiators, int coordinator, List<Long> interactions) {
     }
 
-    /** How one port of an atom type works; per instance index, its connector instance name and parameter. */
+    /**
+     * How one port of an atom type works; per instance index, its connector instance name, parameter and role
+     * (instances of one type may play different parts, e.g. both ends of a rendezvous).
+     */
     record PortPlan(PortDecl port, Role role, ConnectorType connector, String[] connectorByInstance,
-            int[] paramByInstance) {
+            int[] paramByInstance, Role[] roleByInstance) {
+
+        /** @return whether some instance plays this role */
+        boolean has(Role r) {
+            return java.util.Arrays.asList(roleByInstance).contains(r);
+        }
     }
 
     private final SystemModel system;
@@ -145,13 +155,14 @@ final class BusPlan {
         List<PortPlan> plans = new ArrayList<>();
         for (PortDecl port : atom.ports()) {
             if (!port.exported()) {
-                plans.add(new PortPlan(port, Role.LOCAL, null, new String[instances.size()], new int[instances.size()]));
+                plans.add(new PortPlan(port, Role.LOCAL, null, new String[instances.size()], new int[instances.size()],
+                        new Role[instances.size()]));
                 continue;
             }
             String[] names = new String[instances.size()];
             int[] params = new int[instances.size()];
+            Role[] roles = new Role[instances.size()];
             ConnectorType type = null;
-            Role role = null;
             boolean ok = true;
             for (int i = 0; i < instances.size(); i++) {
                 String path = instances.get(i).path();
@@ -175,19 +186,19 @@ final class BusPlan {
                 Role r = plan.mode() == Mode.BROADCAST
                         ? ((plan.initiators() & (1L << param)) != 0 ? Role.INITIATOR : Role.RECEIVER)
                         : (param == plan.coordinator() ? Role.COORDINATOR : Role.PARTICIPANT);
-                if (type != null && (type != k.type() || role != r)) {
-                    diagnostics.error(k.pos(), "instances of atom type " + atom.name() + " use port " + port.name()
-                            + " differently (" + role + " of " + type.name() + " vs " + r + " of " + k.type().name()
-                            + "); the generated behaviour needs one role per port");
+                if (type != null && type != k.type()) {
+                    diagnostics.error(k.pos(), "instances of atom type " + atom.name() + " bind port " + port.name()
+                            + " to connectors of different types (" + type.name() + ", " + k.type().name()
+                            + "); the generated behaviour needs one connector type per port");
                     ok = false;
                 }
                 type = k.type();
-                role = r;
+                roles[i] = r;
                 names[i] = k.path();
                 params[i] = param;
             }
             if (ok) {
-                plans.add(new PortPlan(port, role == null ? Role.EXTERNAL : role, type, names, params));
+                plans.add(new PortPlan(port, type == null ? Role.EXTERNAL : Role.BOUND, type, names, params, roles));
             }
         }
         return plans;
