@@ -11,6 +11,16 @@ public final class SyntheticModel {
     private SyntheticModel() {
     }
 
+    private static int lineCount(CharSequence s) {
+        int n = 0;
+        for (int i = 0; i < s.length(); i++) {
+            if (s.charAt(i) == '\n') {
+                n++;
+            }
+        }
+        return n;
+    }
+
     /** @return a model of about {@code lines} lines, deterministic for a seed */
     public static String of(int lines, long seed) {
         Random random = new Random(seed);
@@ -23,7 +33,7 @@ public final class SyntheticModel {
         b.append("  connector type Fan(Silent s, Silent r1, Silent r2)\n    define s' r1 r2\n  end\n");
         int atoms = 0;
         StringBuilder compound = new StringBuilder("  compound type Top()\n");
-        while (b.length() / 30 < lines - 10) {
+        while (lineCount(b) + lineCount(compound) < lines - 2) {
             String name = "Worker" + atoms;
             int places = 4 + random.nextInt(4);
             b.append("  atom type ").append(name).append("(int id)\n");
