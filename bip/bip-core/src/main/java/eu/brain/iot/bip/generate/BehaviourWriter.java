@@ -31,14 +31,14 @@ import eu.brain.iot.bip.system.SystemModel.AtomInstance;
  */
 final class BehaviourWriter {
 
-    private final BusPlan plan;
+    final BusPlan plan;
     private final AtomType atom;
     private final Generator.AtomNames names;
-    private final EventsWriter events;
+    final EventsWriter events;
     private final List<AtomInstance> instances;
     private final List<BusPlan.PortPlan> ports;
     private final PackageScope atomScope;
-    private final Diagnostics diagnostics;
+    final Diagnostics diagnostics;
     private final String atomClass;
 
     BehaviourWriter(BusPlan plan, AtomType atom, Generator.AtomNames names, EventsWriter events) {
@@ -53,11 +53,11 @@ final class BehaviourWriter {
         this.atomClass = names.atomClass();
     }
 
-    private String port(BusPlan.PortPlan p) {
+    String port(BusPlan.PortPlan p) {
         return atomClass + ".Port." + JavaNames.id(p.port().name());
     }
 
-    private static String suffix(BusPlan.PortPlan p) {
+    static String suffix(BusPlan.PortPlan p) {
         return JavaNames.capital(p.port().name());
     }
 
@@ -75,6 +75,7 @@ final class BehaviourWriter {
             }
         }
         String cls = names.behaviour();
+        RoleWriter roles = new RoleWriter(this);
         Code c = new Code();
         c.line("package " + names.javaPackage() + ";").blank();
         c.line("/**");
@@ -141,16 +142,16 @@ final class BehaviourWriter {
                 act(c, p);
             }
             if (p.has(BusPlan.Role.INITIATOR)) {
-                initiate(c, p);
+                roles.initiate(c, p);
             }
             if (p.has(BusPlan.Role.RECEIVER)) {
-                receive(c, p);
+                roles.receive(c, p);
             }
             if (p.has(BusPlan.Role.PARTICIPANT)) {
-                participate(c, p);
+                roles.participate(c, p);
             }
             if (p.has(BusPlan.Role.COORDINATOR)) {
-                coordinate(c, p);
+                roles.coordinate(c, p);
             }
         }
         helpers(c);
@@ -208,13 +209,7 @@ final class BehaviourWriter {
     private String literal(Object value, String bipType) {
         Type t = atomScope.resolveType(bipType);
         if (value == null) {
-            return t == null ? "null" : switch (t.kind()) {
-                case INT -> "0";
-                case FLOAT -> "0.0";
-                case BOOL -> "false";
-                case STRING -> "\"\"";
-                default -> "null";
-            };
+            return JavaNames.defaultLiteral(t);
         }
         if (value instanceof String s) {
             return JavaNames.literal(s);
@@ -300,7 +295,7 @@ final class BehaviourWriter {
     }
 
     /** Java that reads/writes the atom field bound to variable {@code var} of port {@code p} (port type order). */
-    private String boundField(PortDecl p, String var) {
+    String boundField(PortDecl p, String var) {
         PortType pt = atomScope.portType(p.portType()).orElseThrow();
         for (int k = 0; k < pt.params().size(); k++) {
             if (pt.params().get(k).name().equals(var)) {
@@ -310,7 +305,7 @@ final class BehaviourWriter {
         throw new IllegalStateException("no variable " + var + " in port type " + pt.name());
     }
 
-    private List<Param> portVars(PortDecl p) {
+    List<Param> portVars(PortDecl p) {
         return atomScope.portType(p.portType()).orElseThrow().params();
     }
 
@@ -333,259 +328,6 @@ final class BehaviourWriter {
         c.close().close().blank();
     }
 
-    private void initiate(Code c, BusPlan.PortPlan p) {
-        ConnectorType t = p.connector();
-        String type = events.eventClass(t);
-        c.line("/** Fires trigger port " + p.port().name() + " alone and publishes the interaction. */");
-        c.open("private boolean initiate" + suffix(p) + "(int i)");
-        c.open("if (CONNECTOR_" + suffix(p) + "[i] == null)").line("return false;").close();
-        c.line(type + " e = new " + type + "();");
-        c.line("e.connector = CONNECTOR_" + suffix(p) + "[i];");
-        c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p, BusPlan.Role.INITIATOR)) {
-            String jName = t.ports().get(j).name();
-            c.open("case " + j + ":");
-            c.line("e.initiator = " + JavaNames.literal(jName) + ";");
-            c.line("e.participants.add(" + JavaNames.literal(jName) + ");");
-            ConnectorType.Interaction clause = Interactions.clause(t, 1L << j);
-            ConnectorCode code = new ConnectorCode(p, jName, Set.of(jName), "initiator");
-            code.locals(c, null);
-            if (clause != null) {
-                code.body(c, clause, "return false;");
-            }
-            for (Param v : portVars(p.port())) {
-                c.line("e." + EventsWriter.dataField(jName, v.name()) + " = " + boundField(p.port(), v.name()) + ";");
-            }
-            for (DataDecl d : t.data()) {
-                c.line("e." + EventsWriter.connectorDataField(d.name()) + " = d_" + d.name() + ";");
-            }
-            c.line("break;").close();
-        }
-        c.line("default: return false;");
-        c.close();
-        c.line("fire(i, " + port(p) + ");");
-        c.line("bus.deliver(e);");
-        c.line("return true;");
-        c.close().blank();
-    }
-
-    private void receive(Code c, BusPlan.PortPlan p) {
-        ConnectorType t = p.connector();
-        String type = events.eventClass(t);
-        BusPlan.ConnectorPlan cp = plan.plan(t);
-        c.line("/** A broadcast of " + t.name() + " arrived: synchron port " + p.port().name() + " joins if ready. */");
-        c.open("private void receive" + suffix(p) + "(" + type + " e)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.RECEIVER) + " || e.connector == null"
-                + " || !e.connector.equals(CONNECTOR_" + suffix(p) + "[i]) || waiting[i] != null"
-                + " || !atoms[i].enabledPorts().contains(" + port(p) + "))").line("continue;").close();
-        c.line("String self = " + JavaNames.literal("") + ";");
-        c.line("boolean joins = false;");
-        c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int r : distinct(p, BusPlan.Role.RECEIVER)) {
-            String rName = t.ports().get(r).name();
-            c.open("case " + r + ":");
-            c.line("self = " + JavaNames.literal(rName) + ";");
-            for (int j = 0; j < t.ports().size(); j++) {
-                if ((cp.initiators() & (1L << j)) == 0 || j == r) {
-                    continue;
-                }
-                String jName = t.ports().get(j).name();
-                ConnectorType.Interaction clause = receiverClause(t, j, r);
-                c.open("if (" + JavaNames.literal(jName) + ".equals(e.initiator))");
-                ConnectorCode code = new ConnectorCode(p, rName, Set.of(jName, rName), "receiver");
-                code.locals(c, "e");
-                c.open("do");
-                if (clause != null) {
-                    code.body(c, clause, "break;");
-                }
-                c.line("joins = true;");
-                c.close("} while (false);");
-                c.close();
-            }
-            c.line("break;").close();
-        }
-        c.line("default: break;");
-        c.close();
-        c.open("if (joins)");
-        c.line("fire(i, " + port(p) + ");");
-        c.line("run(i);");
-        c.close();
-        c.close().close().blank();
-    }
-
-    /** The clause for a receiver: exactly {initiator, receiver}, else the first that contains both. */
-    private static ConnectorType.Interaction receiverClause(ConnectorType t, int j, int r) {
-        long pair = (1L << j) | (1L << r);
-        ConnectorType.Interaction exact = Interactions.clause(t, pair);
-        if (exact != null) {
-            return exact;
-        }
-        for (ConnectorType.Interaction i : t.interactions()) {
-            if ((Interactions.mask(t, i.ports()) & pair) == pair) {
-                return i;
-            }
-        }
-        return null;
-    }
-
-    private void participate(Code c, BusPlan.PortPlan p) {
-        ConnectorType t = p.connector();
-        String offer = events.offerClass(t);
-        String type = events.eventClass(t);
-        c.line("/** Port " + p.port().name() + " is ready: offer it to the coordinator of " + t.name() + " and wait. */");
-        c.open("private boolean offer" + suffix(p) + "(int i)");
-        c.open("if (CONNECTOR_" + suffix(p) + "[i] == null)").line("return false;").close();
-        c.line(offer + " o = new " + offer + "();");
-        c.line("o.connector = CONNECTOR_" + suffix(p) + "[i];");
-        c.line("o.component = COMPONENTS[i];");
-        c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p, BusPlan.Role.PARTICIPANT)) {
-            String jName = t.ports().get(j).name();
-            c.open("case " + j + ":");
-            c.line("o.port = " + JavaNames.literal(jName) + ";");
-            for (Param v : portVars(p.port())) {
-                c.line("o." + EventsWriter.dataField(jName, v.name()) + " = " + boundField(p.port(), v.name()) + ";");
-            }
-            c.line("break;").close();
-        }
-        c.line("default: return false;");
-        c.close();
-        c.line("waiting[i] = o.connector;");
-        c.line("bus.deliver(o);");
-        c.line("return true;");
-        c.close().blank();
-        c.line("/** The coordinator of " + t.name() + " fired: take part if this instance was in the interaction. */");
-        c.open("private void complete" + suffix(p) + "(" + type + " e)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.PARTICIPANT) + " || e.connector == null"
-                + " || !e.connector.equals(waiting[i]) || !e.connector.equals(CONNECTOR_" + suffix(p) + "[i]))")
-                .line("continue;").close();
-        c.open("switch (PARAM_" + suffix(p) + "[i])");
-        for (int j : distinct(p, BusPlan.Role.PARTICIPANT)) {
-            String jName = t.ports().get(j).name();
-            c.open("case " + j + ":");
-            c.open("if (!e.participants.contains(" + JavaNames.literal(jName) + "))").line("continue;").close();
-            for (Param v : portVars(p.port())) {
-                c.line(boundField(p.port(), v.name()) + " = e." + EventsWriter.dataField(jName, v.name()) + ";");
-            }
-            c.line("break;").close();
-        }
-        c.line("default: continue;");
-        c.close();
-        c.line("waiting[i] = null;");
-        c.line("fire(i, " + port(p) + ");");
-        c.line("run(i);");
-        c.close().close().blank();
-    }
-
-    private void coordinate(Code c, BusPlan.PortPlan p) {
-        ConnectorType t = p.connector();
-        BusPlan.ConnectorPlan cp = plan.plan(t);
-        String offer = events.offerClass(t);
-        String type = events.eventClass(t);
-        int self = cp.coordinator();
-        String selfName = t.ports().get(self).name();
-        List<Long> candidates = cp.interactions().stream().filter(m -> (m & (1L << self)) != 0).toList();
-        c.line("/** An offer for " + t.name() + " arrived: keep it (the latest per port) and see whether to fire. */");
-        c.open("private void collect" + suffix(p) + "(" + offer + " o)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (ROLE_" + suffix(p) + "[i] != " + roleCode(BusPlan.Role.COORDINATOR) + " || o.connector == null"
-                + " || !o.connector.equals(CONNECTOR_" + suffix(p) + "[i]))").line("continue;").close();
-        c.line("int param = paramIndex" + suffix(p) + "(o.port);");
-        c.open("if (param < 0 || param == " + self + ")");
-        c.line("LOG.log(System.Logger.Level.WARNING, \"offer for unknown port {0} of {1} ignored\", o.port, o.connector);");
-        c.line("continue;").close();
-        c.line("offers" + suffix(p) + "[i][param] = o;");
-        c.line("run(i);");
-        c.close().close().blank();
-        c.open("private static int paramIndex" + suffix(p) + "(String port)");
-        c.open("switch (String.valueOf(port))");
-        for (int k = 0; k < t.ports().size(); k++) {
-            c.line("case " + JavaNames.literal(t.ports().get(k).name()) + ": return " + k + ";");
-        }
-        c.line("default: return -1;");
-        c.close().close().blank();
-        c.line("/** Fires the largest complete interaction of " + t.name() + " (round robin among equals), if any. */");
-        c.open("private boolean coordinate" + suffix(p) + "(int i)");
-        c.open("if (CONNECTOR_" + suffix(p) + "[i] == null)").line("return false;").close();
-        int k = 0;
-        while (k < candidates.size()) {
-            int size = Long.bitCount(candidates.get(k));
-            int end = k;
-            while (end < candidates.size() && Long.bitCount(candidates.get(end)) == size) {
-                end++;
-            }
-            int count = end - k;
-            c.open("for (int n = 0; n < " + count + "; n++)");
-            c.line("int m = " + k + " + (rotation" + suffix(p) + "[i] + n) % " + count + ";");
-            c.open("if (interaction" + suffix(p) + "(i, m))");
-            c.line("rotation" + suffix(p) + "[i] = m - " + k + " + 1;");
-            c.line("return true;").close();
-            c.close();
-            k = end;
-        }
-        c.line("return false;");
-        c.close().blank();
-        c.open("private boolean interaction" + suffix(p) + "(int i, int m)");
-        c.line(offer + "[] offers = offers" + suffix(p) + "[i];");
-        c.open("switch (m)");
-        for (int m = 0; m < candidates.size(); m++) {
-            long mask = candidates.get(m);
-            List<String> members = Interactions.names(t, mask);
-            c.open("case " + m + ":");
-            for (int q = 0; q < t.ports().size(); q++) {
-                if (q != self && (mask & (1L << q)) != 0) {
-                    c.open("if (offers[" + q + "] == null)").line("return false;").close();
-                }
-            }
-            ConnectorCode code = new ConnectorCode(p, selfName, new LinkedHashSet<>(members), "coordinator");
-            code.coordinatorLocals(c, mask, self);
-            ConnectorType.Interaction clause = Interactions.clause(t, mask);
-            if (clause != null) {
-                code.body(c, clause, "return false;");
-            }
-            for (Param v : portVars(p.port())) {
-                c.line(boundField(p.port(), v.name()) + " = " + ConnectorCode.local(selfName, v.name()) + ";");
-            }
-            c.line(type + " e = new " + type + "();");
-            c.line("e.connector = CONNECTOR_" + suffix(p) + "[i];");
-            c.line("e.initiator = " + JavaNames.literal(selfName) + ";");
-            for (String member : members) {
-                c.line("e.participants.add(" + JavaNames.literal(member) + ");");
-                Param param = t.ports().get(Interactions.index(t, member));
-                for (Param v : events.portType(t, param).params()) {
-                    c.line("e." + EventsWriter.dataField(member, v.name()) + " = " + ConnectorCode.local(member, v.name())
-                            + ";");
-                }
-            }
-            for (DataDecl d : t.data()) {
-                c.line("e." + EventsWriter.connectorDataField(d.name()) + " = d_" + d.name() + ";");
-            }
-            for (int q = 0; q < t.ports().size(); q++) {
-                if (q != self && (mask & (1L << q)) != 0) {
-                    c.line("offers[" + q + "] = null;");
-                }
-            }
-            c.line("fire(i, " + port(p) + ");");
-            c.line("bus.deliver(e);");
-            c.line("return true;");
-            c.close("}");
-        }
-        c.line("default: return false;");
-        c.close().close().blank();
-    }
-
-    /** @return the connector parameters the instances playing {@code role} are bound to */
-    private static List<Integer> distinct(BusPlan.PortPlan p, BusPlan.Role role) {
-        Set<Integer> set = new LinkedHashSet<>();
-        for (int i = 0; i < p.paramByInstance().length; i++) {
-            if (p.roleByInstance()[i] == role) {
-                set.add(p.paramByInstance()[i]);
-            }
-        }
-        return new ArrayList<>(set);
-    }
 
     static int roleCode(BusPlan.Role role) {
         return role == null ? 0 : switch (role) {
@@ -655,139 +397,4 @@ final class BehaviourWriter {
         c.close();
     }
 
-    /**
-     * Writes the guard, up and down of a connector clause for one role. Port data become locals
-     * ({@code v_p1_position}), connector data {@code d_name}; what a role may not see is reported.
-     */
-    private final class ConnectorCode {
-        private final BusPlan.PortPlan p;
-        private final String own;
-        private final Set<String> visible;
-        private final String role;
-        private final PackageScope scope;
-        private final ExprTyper typer;
-        private final LocalNames names;
-        private String eventVar;
-
-        ConnectorCode(BusPlan.PortPlan p, String own, Set<String> visible, String role) {
-            this.p = p;
-            this.own = own;
-            this.visible = visible;
-            this.role = role;
-            this.scope = events.scope(p.connector());
-            this.typer = new ExprTyper(scope, new Diagnostics());
-            this.names = LocalNames.connector(scope, p.connector());
-        }
-
-        static String local(String param, String var) {
-            return "v_" + param + "_" + var;
-        }
-
-        private String javaType(String bipType, PackageScope where) {
-            Type t = where.resolveType(bipType);
-            return JavaNames.javaType(t == null ? Type.ERROR : t, where);
-        }
-
-        /** Locals of a broadcast role: own port from the atom, the initiator's from the event, connector data. */
-        void locals(Code c, String event) {
-            this.eventVar = event;
-            ConnectorType t = p.connector();
-            for (DataDecl d : t.data()) {
-                String init = event == null ? defaultValue(d.type().name())
-                        : event + "." + EventsWriter.connectorDataField(d.name());
-                c.line(javaType(d.type().name(), scope) + " d_" + d.name() + " = " + init + ";");
-            }
-        }
-
-        void coordinatorLocals(Code c, long mask, int self) {
-            ConnectorType t = p.connector();
-            for (int q = 0; q < t.ports().size(); q++) {
-                if ((mask & (1L << q)) == 0) {
-                    continue;
-                }
-                Param param = t.ports().get(q);
-                PortType pt = events.portType(t, param);
-                PackageScope ptScope = new PackageScope(scope.workspace(), scope.owner(pt));
-                for (Param v : pt.params()) {
-                    String value = q == self ? boundField(p.port(), v.name())
-                            : "offers[" + q + "]." + EventsWriter.dataField(param.name(), v.name());
-                    c.line(javaType(v.type().name(), ptScope) + " " + local(param.name(), v.name()) + " = " + value + ";");
-                }
-            }
-            for (DataDecl d : t.data()) {
-                c.line(javaType(d.type().name(), scope) + " d_" + d.name() + " = " + defaultValue(d.type().name()) + ";");
-            }
-        }
-
-        private String defaultValue(String bipType) {
-            Type t = scope.resolveType(bipType);
-            return t == null ? "null" : switch (t.kind()) {
-                case INT -> "0";
-                case FLOAT -> "0.0";
-                case BOOL -> "false";
-                case STRING -> "\"\"";
-                default -> "null";
-            };
-        }
-
-        void body(Code c, ConnectorType.Interaction clause, String reject) {
-            ExprWriter w = new ExprWriter(typer, names, new Mapper());
-            if (clause.guard() != null) {
-                c.open("if (!" + w.expr(clause.guard()) + ")").line(reject).close();
-            }
-            if (clause.up() != null) {
-                w.statements(c, clause.up().stmts());
-            }
-            if (clause.down() != null) {
-                w.statements(c, clause.down().stmts());
-            }
-        }
-
-        private final class Mapper implements ExprWriter.Mapper {
-            @Override
-            public String read(Symbol s, Expr.Var v) {
-                if (s.kind() == Symbol.Kind.CONST) {
-                    Object value = ConstantFolder.fold(v, scope);
-                    return value instanceof String str ? JavaNames.literal(str) : String.valueOf(value);
-                }
-                if (v.qualifier() == null) {
-                    return "d_" + v.name();
-                }
-                return portData(v, true);
-            }
-
-            @Override
-            public String write(Symbol s, Expr.Var v) {
-                if (v.qualifier() == null) {
-                    return "d_" + v.name();
-                }
-                if (!role.equals("coordinator") && !v.qualifier().equals(own)) {
-                    return null;
-                }
-                return portData(v, false);
-            }
-
-            private String portData(Expr.Var v, boolean reading) {
-                if (role.equals("coordinator")) {
-                    return local(v.qualifier(), v.name());
-                }
-                if (v.qualifier().equals(own)) {
-                    return boundField(p.port(), v.name());
-                }
-                if (visible.contains(v.qualifier()) && eventVar != null) {
-                    return eventVar + "." + EventsWriter.dataField(v.qualifier(), v.name());
-                }
-                diagnostics.error(v.pos(), "cannot generate the " + role + " side of connector type "
-                        + p.connector().name() + ": " + v.text() + " is data of a port this side does not know on the "
-                        + "event bus (a broadcast's guard and transfers may use the trigger's port, the receiver's own "
-                        + "port and connector data)");
-                return "null";
-            }
-
-            @Override
-            public String call(ResolvedCall call, List<String> args) {
-                return "bipExterns." + JavaNames.id(call.name()) + "(" + String.join(", ", args) + ")";
-            }
-        }
-    }
 }

@@ -74,6 +74,17 @@ public final class JavaNames {
         };
     }
 
+    /** @return the Java literal of the value a datum of this type starts with (as the interpreter's Ops) */
+    public static String defaultLiteral(Type t) {
+        return t == null ? "null" : switch (t.kind()) {
+            case INT -> "0";
+            case FLOAT -> "0.0";
+            case BOOL -> "false";
+            case STRING -> "\"\"";
+            default -> "null";
+        };
+    }
+
     /** The Java type for use as a generic argument or in a list. */
     public static String boxed(String javaType) {
         return switch (javaType) {
