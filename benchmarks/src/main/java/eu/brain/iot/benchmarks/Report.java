@@ -1,6 +1,9 @@
 package eu.brain.iot.benchmarks;
 
+import java.io.IOException;
 import java.io.PrintStream;
+import java.nio.file.Files;
+import java.nio.file.Path;
 import java.util.List;
 import java.util.Locale;
 
@@ -24,6 +27,21 @@ final class Report {
         out.printf(Locale.ROOT, "Java:    %s %s (%s)%n", System.getProperty("java.vm.name"),
                 System.getProperty("java.runtime.version"), System.getProperty("java.vm.vendor"));
         out.println("Run:     " + settings);
+        load("at the start");
+    }
+
+    /**
+     * Print the 1/5/15-minute load averages (Linux): on a shared 2-core machine other work skews every figure, so
+     * the report says how busy the machine was.
+     */
+    void load(String when) {
+        try {
+            String[] avg = Files.readString(Path.of("/proc/loadavg")).trim().split("\\s+");
+            out.printf(Locale.ROOT, "Load average %s: %s %s %s (1, 5, 15 min; %d cores)%n", when, avg[0], avg[1], avg[2],
+                    Runtime.getRuntime().availableProcessors());
+        } catch (IOException | RuntimeException e) {
+            out.println("Load average " + when + ": unknown (" + e.getMessage() + ")");
+        }
         out.flush();
     }
 
