@@ -53,7 +53,8 @@ public final class Lexer {
                     index++;
                 }
                 add(Kind.IDENT, start);
-            } else if (Character.isDigit(c)) {
+            } else if (Character.isDigit(c) || (c == '.' && index + 1 < n && Character.isDigit(src.charAt(index + 1))
+                    && !afterName())) {
                 number(start);
             } else if (c == '"') {
                 string(start);
@@ -106,9 +107,27 @@ public final class Lexer {
         }
     }
 
+    /** @return whether the previous token ends a name or a value (then a '.' is a qualifier dot, not a number) */
+    private boolean afterName() {
+        if (tokens.isEmpty()) {
+            return false;
+        }
+        Token last = tokens.get(tokens.size() - 1);
+        return last.is(Kind.IDENT) || last.is(Kind.RPAREN) || last.is(Kind.INT) || last.is(Kind.FLOAT);
+    }
+
     private void number(int start) {
         int n = src.length();
         boolean isFloat = false;
+        if (src.charAt(index) == '.') {
+            index++;
+            while (index < n && Character.isDigit(src.charAt(index))) {
+                index++;
+            }
+            isFloat = true;
+            exponentAndEnd(start, isFloat);
+            return;
+        }
         if (src.charAt(index) == '0' && index + 1 < n && (src.charAt(index + 1) == 'x' || src.charAt(index + 1) == 'X')) {
             index += 2;
             while (index < n && Character.digit(src.charAt(index), 16) >= 0) {
@@ -127,6 +146,11 @@ public final class Lexer {
                 index++;
             }
         }
+        exponentAndEnd(start, isFloat);
+    }
+
+    private void exponentAndEnd(int start, boolean isFloat) {
+        int n = src.length();
         if (index < n && (src.charAt(index) == 'e' || src.charAt(index) == 'E')) {
             int save = index;
             index++;

@@ -1,0 +1,153 @@
+package eu.brain.iot.bip.interp;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Optional;
+
+import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.bip.Models;
+import eu.brain.iot.bip.Toolchain;
+import eu.brain.iot.bip.system.SystemModel;
+
+/** The system interpreter follows the BIP semantics on small closed models (after the BIP2 tutorial). */
+class SystemRunTest {
+
+    private static SystemRun run(String model, List<String> printed) {
+        Toolchain tool = Models.check("m.bip", model);
+        assertThat(tool.diagnostics().errors()).isEmpty();
+        SystemModel system = SystemModel.build(tool.workspace(), null, tool.diagnostics()).orElseThrow();
+        return new SystemRun(system, (name, types, result, args) -> {
+            printed.add(name + java.util.Arrays.toString(args));
+            return null;
+        });
+    }
+
+    @Test
+    void rendezvousFiresOnlyWhenEveryPortIsReady() {
+        List<String> printed = new ArrayList<>();
+        SystemRun run = run("""
+                package Hello
+                  extern function printf(string, int)
+                  port type P()
+                  atom type A(int id)
+                    export port P p()
+                    place START, END
+                    initial to START
+                    on p from START to END do { printf("hello from", id); }
+                  end
+                  connector type Three(P p1, P p2, P p3)
+                    define p1 p2 p3
+                  end
+                  compound type C()
+                    component A c1(1), c2(2), c3(3)
+                    connector Three connect(c1.p, c2.p, c3.p)
+                  end
+                end
+                """, printed);
+        assertThat(run.candidates()).extracting(Object::toString).containsExactly("connect: [c1.p, c2.p, c3.p]");
+        assertThat(run.step(c -> 0)).contains("connect: [c1.p, c2.p, c3.p]");
+        assertThat(printed).containsExactly("printf[hello from, 1]", "printf[hello from, 2]", "printf[hello from, 3]");
+        assertThat(run.atoms().values()).allSatisfy(a -> assertThat(a.marking()).containsExactly("END"));
+        assertThat(run.step(c -> 0)).isEqualTo(Optional.empty());
+    }
+
+    @Test
+    void broadcastTakesTheMaximalInteractionOfReadyReceiversAndTransfersData() {
+        SystemRun run = run("""
+                package Brd
+                  port type P(int d)
+                  atom type Sender(int id)
+                    data int myd
+                    export port P p(myd)
+                    place START, END
+                    initial to START do { myd = id; }
+                    on p from START to END
+                  end
+                  atom type Receiver(int id)
+                    data int myd = -1
+                    export port P p(myd)
+                    place START, END
+                    initial to START
+                    on p from START to END provided (id == 1 || id == 3)
+                  end
+                  connector type OneToThree(P s, P r1, P r2, P r3)
+                    define s' r1 r2 r3
+                    on s r1 r3 down { r1.d = s.d; r3.d = s.d + 1; }
+                  end
+                  compound type C()
+                    component Sender s(7)
+                    component Receiver r1(1), r2(2), r3(3)
+                    connector OneToThree brd(s.p, r1.p, r2.p, r3.p)
+                  end
+                end
+                """, new ArrayList<>());
+        assertThat(run.candidates()).extracting(Object::toString).containsExactly("brd: [s.p, r1.p, r3.p]");
+        run.step(c -> 0);
+        assertThat(run.atom("r1").get("myd")).isEqualTo(7);
+        assertThat(run.atom("r3").get("myd")).isEqualTo(8);
+        assertThat(run.atom("r2").get("myd")).isEqualTo(-1);
+        assertThat(run.atom("r2").marking()).containsExactly("START");
+    }
+
+    @Test
+    void internalTransitionsGoFirstAndLocalPortsFireAlone() {
+        SystemRun run = run("""
+                package Local
+                  port type P()
+                  atom type A()
+                    data int n = 0
+                    port P tick()
+                    place S, T
+                    initial to S
+                    internal from S to T provided (n == 0) do { n = 1; }
+                    on tick from T to S do { n = n + 10; }
+                  end
+                  compound type C()
+                    component A a()
+                  end
+                end
+                """, new ArrayList<>());
+        assertThat(run.step(c -> 0)).contains("internal a");
+        assertThat(run.step(c -> 0)).contains("[a.tick]");
+        assertThat(run.atom("a").get("n")).isEqualTo(11);
+        assertThat(run.atom("a").marking()).containsExactly("S");
+    }
+
+    @Test
+    void listing7DeliversThePositionsToTheOrchestrator() {
+        SystemRun run = run("""
+                package Rdv
+                  port type Port_Robot_Position(float position)
+                  port type Port_Orchestrator(float position1, float position2, float position3)
+                  atom type Robot(float start)
+                    data float position
+                    export port Port_Robot_Position resolveCollision(position)
+                    place OBSTACLE, ROBOT
+                    initial to OBSTACLE do { position = start; }
+                    on resolveCollision from OBSTACLE to ROBOT
+                  end
+                  atom type Orchestrator()
+                    data float position1, position2, position3
+                    export port Port_Orchestrator resolveCollision(position1, position2, position3)
+                    place START, COLLISION
+                    initial to START
+                    on resolveCollision from START to COLLISION
+                  end
+                """ + Models.resource("listings/listing7.bip") + """
+                  compound type C()
+                    component Robot r1(1.5), r2(2), r3(3)
+                    component Orchestrator o()
+                    connector connector_resolve_collision c(r1.resolveCollision, r2.resolveCollision,
+                        r3.resolveCollision, o.resolveCollision)
+                  end
+                end
+                """, new ArrayList<>());
+        run.step(c -> 0);
+        assertThat(run.atom("o").values()).containsEntry("position1", 1.5).containsEntry("position2", 2.0)
+                .containsEntry("position3", 3.0);
+        assertThat(run.atom("o").marking()).containsExactly("COLLISION");
+    }
+}
