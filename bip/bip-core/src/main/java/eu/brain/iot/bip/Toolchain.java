@@ -63,15 +63,27 @@ public final class Toolchain {
 
     /** Checks, then generates the Java for the own packages in memory (nothing when there are errors). */
     public List<JavaFile> generateInMemory(String root) {
+        return generateInMemory(root, false);
+    }
+
+    /**
+     * @param strictBus whether a system that cannot be realised on the event bus is an error (the Maven plugin) or
+     *        warnings with only the atom classes generated (the command line's default)
+     */
+    public List<JavaFile> generateInMemory(String root, boolean strictBus) {
         if (!check()) {
             return List.of();
         }
-        return new Generator(workspace, root).generate();
+        return new Generator(workspace, root, strictBus).generate();
     }
 
     /** Checks, then writes the Java under {@code output}; @return the number of files written */
     public int generate(Path output, String root) {
-        List<JavaFile> files = generateInMemory(root);
+        return generate(output, root, false);
+    }
+
+    public int generate(Path output, String root, boolean strictBus) {
+        List<JavaFile> files = generateInMemory(root, strictBus);
         if (diagnostics().hasErrors()) {
             return 0;
         }

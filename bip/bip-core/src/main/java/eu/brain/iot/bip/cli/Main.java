@@ -20,14 +20,16 @@ public final class Main {
 
     static final String USAGE = """
             usage: bip check FILE... [-I DIR]...
-                   bip generate FILE... -o DIR [-I DIR]... [--root COMPOUND]
+                   bip generate FILE... -o DIR [-I DIR]... [--root COMPOUND] [--strict]
                    bip print FILE [-I DIR]...
               check     parse and check the models; print every problem as file:line:col: severity: message
               generate  check, then write Java: one class per atom type, an extern interface per atom type, and,
                         for the root compound, event types and one OSGi smart behaviour per atom type
               print     print the model as canonical BIP
               -I DIR    where 'use'd packages are found (as <Package>.bip)
-              --root    the compound type that is the system (default: the only compound, or the last one)
+              --root    the compound type that is the system (default: the last compound type of the files)
+              --strict  a system that cannot run on the event bus (e.g. hierarchical connectors) is an error;
+                        by default it is a warning and only the atom classes and extern interfaces are written
             """;
 
     private Main() {
@@ -57,6 +59,7 @@ public final class Main {
         List<Path> includes = new ArrayList<>();
         Path output = null;
         String root = null;
+        boolean strict = false;
         for (int i = 1; i < args.length; i++) {
             String a = args[i];
             if ((a.equals("-I") || a.equals("-o") || a.equals("--root")) && i + 1 >= args.length) {
@@ -67,6 +70,7 @@ public final class Main {
                 case "-I" -> includes.add(Path.of(args[++i]));
                 case "-o" -> output = Path.of(args[++i]);
                 case "--root" -> root = args[++i];
+                case "--strict" -> strict = true;
                 default -> {
                     if (a.startsWith("-")) {
                         err.println("bip: unknown option " + a + "\n" + USAGE);
@@ -101,7 +105,7 @@ public final class Main {
                     err.println("bip: generate needs -o DIR\n" + USAGE);
                     return 2;
                 }
-                int written = tool.generate(output, root);
+                int written = tool.generate(output, root, strict);
                 code = report(diagnostics, err);
                 if (code == 0) {
                     out.println("bip: wrote " + written + " Java file(s) to " + output);

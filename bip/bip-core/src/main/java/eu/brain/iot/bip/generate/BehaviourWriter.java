@@ -41,7 +41,8 @@ final class BehaviourWriter {
     final Diagnostics diagnostics;
     private final String atomClass;
 
-    BehaviourWriter(BusPlan plan, AtomType atom, Generator.AtomNames names, EventsWriter events) {
+    BehaviourWriter(BusPlan plan, AtomType atom, Generator.AtomNames names, EventsWriter events,
+            Diagnostics diagnostics) {
         this.plan = plan;
         this.atom = atom;
         this.names = names;
@@ -49,7 +50,7 @@ final class BehaviourWriter {
         this.instances = plan.instances(atom);
         this.ports = plan.ports(atom);
         this.atomScope = instances.get(0).scope();
-        this.diagnostics = atomScope.workspace().diagnostics();
+        this.diagnostics = diagnostics;
         this.atomClass = names.atomClass();
     }
 

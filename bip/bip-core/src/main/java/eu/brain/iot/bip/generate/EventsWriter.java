@@ -79,7 +79,7 @@ final class EventsWriter {
         return scope(type).portType(param.type().name()).orElseThrow();
     }
 
-    List<JavaFile> write() {
+    List<JavaFile> write(eu.brain.iot.bip.diag.Diagnostics diagnostics) {
         List<JavaFile> files = new ArrayList<>();
         Set<String> names = new HashSet<>();
         for (BusPlan.ConnectorPlan cp : plan.connectorPlans()) {
@@ -102,7 +102,8 @@ final class EventsWriter {
         files.add(trace());
         for (JavaFile f : files) {
             if (!names.add(f.className())) {
-                throw new IllegalStateException("two generated event types are named " + f.className());
+                diagnostics.error(plan.system().root().pos(), "two generated event types would be named "
+                        + f.className() + "; rename a connector type, atom type or port");
             }
         }
         return files;

@@ -25,11 +25,23 @@ public final class Generator {
     private final Workspace workspace;
     private final String rootName;
     private final Diagnostics diagnostics;
+    private final boolean strictBus;
 
+    /** Lenient: a system that cannot be realised on the bus still gets its atom classes (see below). */
     public Generator(Workspace workspace, String rootName) {
+        this(workspace, rootName, false);
+    }
+
+    /**
+     * @param strictBus whether a root compound that cannot be realised on the event bus (e.g. a hierarchical
+     *        connector) is an error; when false it is reported as warnings, and only the atom classes and extern
+     *        interfaces are generated
+     */
+    public Generator(Workspace workspace, String rootName, boolean strictBus) {
         this.workspace = workspace;
         this.rootName = rootName;
         this.diagnostics = workspace.diagnostics();
+        this.strictBus = strictBus;
     }
 
     /** The Java names of one atom type's generated classes. */
@@ -39,7 +51,8 @@ public final class Generator {
     public List<JavaFile> generate() {
         List<JavaFile> files = new ArrayList<>();
         Optional<SystemModel> system = SystemModel.build(workspace, rootName, diagnostics);
-        BusPlan plan = system.map(s -> new BusPlan(s, diagnostics)).orElse(null);
+        Diagnostics bus = strictBus ? diagnostics : new Diagnostics();
+        BusPlan plan = system.map(s -> new BusPlan(s, bus)).orElse(null);
         Map<AtomType, AtomNames> names = new HashMap<>();
         for (BipPackage pkg : workspace.packages()) {
             PackageScope scope = new PackageScope(workspace, pkg);
@@ -66,22 +79,42 @@ public final class Generator {
             }
         }
         if (plan != null && !diagnostics.hasErrors()) {
-            String eventsPackage = JavaNames.javaPackage(system.get().rootPackage());
-            EventsWriter events = new EventsWriter(plan, eventsPackage);
-            if (workspace.isOwn(system.get().rootPackage().name())) {
-                files.addAll(events.write());
-            }
-            for (BipPackage pkg : workspace.ownPackages()) {
-                for (AtomType atom : pkg.atomTypes()) {
-                    if (plan.instances(atom).isEmpty()) {
-                        continue;
-                    }
-                    AtomNames n = names.get(atom);
-                    String source = new BehaviourWriter(plan, atom, n, events).write();
-                    files.add(new JavaFile(n.javaPackage(), n.behaviour(), source));
+            List<JavaFile> busFiles = busFiles(plan, system.get(), names, bus);
+            if (!bus.hasErrors()) {
+                files.addAll(busFiles);
+            } else if (!strictBus) {
+                for (var d : bus.errors()) {
+                    diagnostics.warning(d.pos(), d.message() + " (so no smart behaviour or event type is generated "
+                            + "for compound " + system.get().root().name() + "; the atom classes are)");
                 }
             }
         }
         return diagnostics.hasErrors() ? List.of() : files;
+    }
+
+    private List<JavaFile> busFiles(BusPlan plan, SystemModel system, Map<AtomType, AtomNames> names, Diagnostics bus) {
+        List<JavaFile> files = new ArrayList<>();
+        for (BipPackage pkg : workspace.ownPackages()) {
+            pkg.atomTypes().forEach(plan::ports);
+        }
+        if (bus.hasErrors()) {
+            return files;
+        }
+        String eventsPackage = JavaNames.javaPackage(system.rootPackage());
+        EventsWriter events = new EventsWriter(plan, eventsPackage);
+        if (workspace.isOwn(system.rootPackage().name())) {
+            files.addAll(events.write(bus));
+        }
+        for (BipPackage pkg : workspace.ownPackages()) {
+            for (AtomType atom : pkg.atomTypes()) {
+                if (plan.instances(atom).isEmpty()) {
+                    continue;
+                }
+                AtomNames n = names.get(atom);
+                String source = new BehaviourWriter(plan, atom, n, events, bus).write();
+                files.add(new JavaFile(n.javaPackage(), n.behaviour(), source));
+            }
+        }
+        return files;
     }
 }

@@ -55,6 +55,41 @@ class MainTest {
     }
 
     @Test
+    void aSystemThatCannotRunOnTheBusStillGetsItsAtomClassesUnlessStrict() throws Exception {
+        Path model = dir.resolve("Hier.bip");
+        Files.writeString(model, """
+                package Hier
+                  port type P()
+                  atom type A()
+                    export port P p()
+                    place S
+                    initial to S
+                    on p from S to S
+                  end
+                  connector type Two(P a, P b)
+                    export port P ep()
+                    define a b
+                  end
+                  connector type Up(P x, P y)
+                    define x y
+                  end
+                  compound type C()
+                    component A a1(), a2(), a3()
+                    connector Two t(a1.p, a2.p)
+                    connector Up u(t.ep, a3.p)
+                  end
+                end
+                """);
+        Path output = dir.resolve("gen");
+        assertThat(run("generate", model.toString(), "-o", output.toString())).as(err()).isZero();
+        assertThat(err()).contains("warning: connector u is hierarchical").contains("the atom classes are");
+        assertThat(output.resolve("hier/A.java")).exists();
+        assertThat(output.resolve("hier/ABehaviour.java")).doesNotExist();
+        assertThat(run("generate", model.toString(), "-o", dir.resolve("gen2").toString(), "--strict")).isEqualTo(1);
+        assertThat(err()).contains("error: connector u is hierarchical");
+    }
+
+    @Test
     void badCommandLinesExitWithTwoAndUsage() {
         assertThat(run()).isEqualTo(2);
         assertThat(run("frobnicate", "x.bip")).isEqualTo(2);

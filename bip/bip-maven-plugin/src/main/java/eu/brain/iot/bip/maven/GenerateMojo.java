@@ -28,6 +28,14 @@ public class GenerateMojo extends AbstractBipMojo {
     @Parameter(property = "bip.outputDirectory", defaultValue = "${project.build.directory}/generated-sources/bip")
     private File outputDirectory;
 
+    /**
+     * Whether a root compound that cannot be realised on the event bus (a hierarchical connector, a connector with
+     * neither trigger nor coordinator) fails the build; when false, only atom classes and extern interfaces are
+     * generated and the reasons are logged as warnings.
+     */
+    @Parameter(property = "bip.strict", defaultValue = "true")
+    private boolean strict;
+
     @Parameter(defaultValue = "${project}", readonly = true, required = true)
     private MavenProject project;
 
@@ -40,7 +48,7 @@ public class GenerateMojo extends AbstractBipMojo {
         Toolchain tool = loadAndCheck();
         Path out = outputDirectory.toPath();
         clean(out);
-        int written = tool.generate(out, root);
+        int written = tool.generate(out, root, strict);
         report(tool.diagnostics());
         project.addCompileSourceRoot(outputDirectory.getAbsolutePath());
         getLog().info("BIP: wrote " + written + " Java file(s) to " + out);
