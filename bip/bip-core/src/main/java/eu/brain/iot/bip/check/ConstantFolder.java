@@ -1,11 +1,18 @@
 package eu.brain.iot.bip.check;
 
-import eu.brain.iot.bip.interp.Ops;
+import eu.brain.iot.bip.diag.Diagnostics;
+import eu.brain.iot.bip.interp.Env;
+import eu.brain.iot.bip.interp.Evaluator;
 import eu.brain.iot.bip.model.ConstDecl;
 import eu.brain.iot.bip.model.Expr;
 
-/** Evaluates expressions made only of literals and package constants; anything else folds to null. */
+/**
+ * Evaluates expressions made only of literals and package constants, with the interpreter's evaluator; anything
+ * else (data, calls, ill-typed or failing expressions) folds to null.
+ */
 public final class ConstantFolder {
+
+    private static final int MAX_DEPTH = 50;
 
     private ConstantFolder() {
     }
@@ -15,51 +22,48 @@ public final class ConstantFolder {
     }
 
     private static Object fold(Expr e, PackageScope scope, int depth) {
-        if (depth > 50) {
+        if (depth > MAX_DEPTH) {
             return null;
         }
+        Evaluator evaluator = new Evaluator(new ExprTyper(scope, new Diagnostics()), LocalNames.constants(scope));
         try {
-            if (e instanceof Expr.IntLit i) {
-                return (int) i.value();
-            } else if (e instanceof Expr.FloatLit f) {
-                return f.value();
-            } else if (e instanceof Expr.BoolLit b) {
-                return b.value();
-            } else if (e instanceof Expr.StringLit s) {
-                return s.value();
-            } else if (e instanceof Expr.Var v) {
-                String name = v.qualifier() == null ? v.name() : v.text();
-                ConstDecl c = scope.constant(name).orElse(null);
-                if (c == null) {
-                    return null;
+            return evaluator.eval(e, new Env() {
+                @Override
+                public Object get(Symbol symbol, String qualifiedName) {
+                    if (symbol.kind() != Symbol.Kind.CONST) {
+                        throw new NotConstant();
+                    }
+                    ConstDecl c = (ConstDecl) symbol.decl();
+                    PackageScope owner = new PackageScope(scope.workspace(), scope.owner(c));
+                    Object value = fold(c.value(), owner, depth + 1);
+                    if (value == null) {
+                        throw new NotConstant();
+                    }
+                    return value;
                 }
-                Object value = fold(c.value(), scope, depth + 1);
-                Type t = scope.resolveType(c.type().name());
-                return value == null || t == null ? value : Ops.coerce(value, t);
-            } else if (e instanceof Expr.Unary u) {
-                Object v = fold(u.operand(), scope, depth + 1);
-                return v == null ? null : Ops.unary(u.op(), v);
-            } else if (e instanceof Expr.Binary b) {
-                Object l = fold(b.left(), scope, depth + 1);
-                if (b.op() == Expr.BinaryOp.AND && Boolean.FALSE.equals(l)) {
-                    return false;
+
+                @Override
+                public void set(Symbol symbol, String qualifiedName, Object value) {
+                    throw new NotConstant();
                 }
-                if (b.op() == Expr.BinaryOp.OR && Boolean.TRUE.equals(l)) {
-                    return true;
+
+                @Override
+                public Object call(ResolvedCall call, Object[] args) {
+                    throw new NotConstant();
                 }
-                Object r = fold(b.right(), scope, depth + 1);
-                if (l == null || r == null) {
-                    return null;
-                }
-                if (b.op().logical()) {
-                    return r;
-                }
-                return Ops.binary(b.op(), l, r);
-            }
-        } catch (RuntimeException ex) {
-            // ill-typed or dividing by zero: the checker reports types; folding just gives up
+            });
+        } catch (RuntimeException notConstantOrIllTyped) {
+            // data, calls, unknown names, ill-typed operands, division by zero: the checker reports what matters
             return null;
         }
-        return null;
+    }
+
+    /** Control flow: the expression depends on something that is not a constant. */
+    private static final class NotConstant extends RuntimeException {
+        private static final long serialVersionUID = 1L;
+
+        NotConstant() {
+            super(null, null, false, false);
+        }
     }
 }

@@ -101,26 +101,8 @@ public final class JavaNames {
         return f.substring(f.lastIndexOf('/') + 1);
     }
 
-    /** A Java string literal. */
+    /** A Java string literal (non-ASCII characters as unicode escapes). */
     public static String literal(String s) {
-        StringBuilder q = new StringBuilder("\"");
-        for (char c : s.toCharArray()) {
-            switch (c) {
-                case '"' -> q.append("\\\"");
-                case '\\' -> q.append("\\\\");
-                case '\n' -> q.append("\\n");
-                case '\t' -> q.append("\\t");
-                case '\r' -> q.append("\\r");
-                case '\0' -> q.append("\\0");
-                default -> {
-                    if (c < 0x20 || c > 0x7e) {
-                        q.append(String.format("\\u%04x", (int) c));
-                    } else {
-                        q.append(c);
-                    }
-                }
-            }
-        }
-        return q.append('"').toString();
+        return eu.brain.iot.bip.print.Printer.quote(s, true);
     }
 }

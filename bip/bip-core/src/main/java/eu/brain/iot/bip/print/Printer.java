@@ -275,6 +275,15 @@ public final class Printer {
     }
 
     static String quote(String s) {
+        return quote(s, false);
+    }
+
+    /**
+     * A double-quoted literal with {@code \\ \" \n \t \r \0} escaped, as BIP and Java both read it.
+     *
+     * @param asciiOnly whether other characters outside printable ASCII become unicode escapes (for Java)
+     */
+    public static String quote(String s, boolean asciiOnly) {
         StringBuilder q = new StringBuilder("\"");
         for (char c : s.toCharArray()) {
             switch (c) {
@@ -284,7 +293,13 @@ public final class Printer {
                 case '\t' -> q.append("\\t");
                 case '\r' -> q.append("\\r");
                 case '\0' -> q.append("\\0");
-                default -> q.append(c);
+                default -> {
+                    if (asciiOnly && (c < 0x20 || c > 0x7e)) {
+                        q.append(String.format("\\u%04x", (int) c));
+                    } else {
+                        q.append(c);
+                    }
+                }
             }
         }
         return q.append('"').toString();
