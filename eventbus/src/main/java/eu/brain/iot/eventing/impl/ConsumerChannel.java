@@ -51,6 +51,8 @@ final class ConsumerChannel {
     private final Thread thread;
 
     // Owned by the delivery thread.
+    /** The behaviour object, fetched on the first delivery. */
+    private Object behaviour;
     private final Map<Class<?>, Class<?>> ownClassOf = new HashMap<>();
     private final Map<String, Class<?>> ownClassByName = new HashMap<>();
     private final Set<String> failureLogged = new HashSet<>();
@@ -129,6 +131,10 @@ final class ConsumerChannel {
             handle(envelope);
         }
         discardPending();
+        if (behaviour != null) {
+            behaviour = null;
+            spec.target().release();
+        }
     }
 
     private Envelope awaitEnvelope() {
@@ -163,11 +169,17 @@ final class ConsumerChannel {
 
     private void handle(Envelope envelope) {
         try {
+            if (behaviour == null) {
+                behaviour = spec.target().get();
+                if (behaviour == null) {
+                    throw new IllegalStateException("the behaviour service is no longer available");
+                }
+            }
             if (spec.untyped()) {
-                ((UntypedSmartBehaviour) spec.target()).notify(envelope.type(), toMap(envelope));
+                ((UntypedSmartBehaviour) behaviour).notify(envelope.type(), toMap(envelope));
             } else {
                 @SuppressWarnings("unchecked")
-                SmartBehaviour<BrainIoTEvent> typed = (SmartBehaviour<BrainIoTEvent>) spec.target();
+                SmartBehaviour<BrainIoTEvent> typed = (SmartBehaviour<BrainIoTEvent>) behaviour;
                 typed.notify(toTyped(envelope));
             }
             delivered = delivered + 1;

@@ -15,9 +15,9 @@ import org.osgi.framework.Filter;
  * @param filter the filter over event fields, or {@code null}
  * @param lastResort whether it only receives events no one else consumes
  * @param untyped whether it was registered as an {@code UntypedSmartBehaviour} (an object may implement both)
- * @param target the {@code SmartBehaviour} or {@code UntypedSmartBehaviour} object
+ * @param target the {@code SmartBehaviour} or {@code UntypedSmartBehaviour} object, fetched on first delivery
  * @param classes loads a class by name as the behaviour's bundle sees it; {@code null} when it cannot
  */
 record ConsumerSpec(long serviceId, String name, String bundle, Set<String> consumed, Filter filter,
-        boolean lastResort, boolean untyped, Object target, Function<String, Class<?>> classes) {
+        boolean lastResort, boolean untyped, BehaviourHandle target, Function<String, Class<?>> classes) {
 }

@@ -13,6 +13,7 @@ import org.osgi.framework.Filter;
 import org.osgi.framework.FrameworkUtil;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
+import org.osgi.service.component.ComponentServiceObjects;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
@@ -63,8 +64,8 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
 
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
             unbind = "removeSmartBehaviour")
-    void addSmartBehaviour(SmartBehaviour<BrainIoTEvent> behaviour, ServiceReference<?> ref) {
-        add(behaviour, false, ref);
+    void addSmartBehaviour(ComponentServiceObjects<SmartBehaviour<BrainIoTEvent>> behaviour) {
+        add(behaviour, false);
     }
 
     void removeSmartBehaviour(ServiceReference<?> ref) {
@@ -73,15 +74,16 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
 
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
             unbind = "removeUntypedSmartBehaviour")
-    void addUntypedSmartBehaviour(UntypedSmartBehaviour behaviour, ServiceReference<?> ref) {
-        add(behaviour, true, ref);
+    void addUntypedSmartBehaviour(ComponentServiceObjects<UntypedSmartBehaviour> behaviour) {
+        add(behaviour, true);
     }
 
     void removeUntypedSmartBehaviour(ServiceReference<?> ref) {
         bus.removeConsumer(serviceId(ref));
     }
 
-    private void add(Object behaviour, boolean untyped, ServiceReference<?> ref) {
+    private <S> void add(ComponentServiceObjects<S> behaviour, boolean untyped) {
+        ServiceReference<S> ref = behaviour.getServiceReference();
         Bundle bundle = ref.getBundle();
         String bundleName = bundle == null ? "?" : bundle.getSymbolicName();
         String name = describe(ref, bundleName);
@@ -109,8 +111,33 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
             }
         }
         bus.addConsumer(new ConsumerSpec(serviceId(ref), name, bundleName, Set.copyOf(consumed), filter, lastResort,
-                untyped, behaviour, className -> loadClass(bundle, className)));
+                untyped, handle(behaviour), className -> loadClass(bundle, className)));
         log.debug("Smart behaviour {} (bundle {}) consumes {}", name, bundleName, lastResort ? "unhandled events" : consumed);
+    }
+
+    private static <S> BehaviourHandle handle(ComponentServiceObjects<S> objects) {
+        return new BehaviourHandle() {
+            private S service;
+
+            @Override
+            public Object get() {
+                try {
+                    service = objects.getService();
+                } catch (IllegalStateException gone) {
+                    service = null;
+                }
+                return service;
+            }
+
+            @Override
+            public void release() {
+                try {
+                    objects.ungetService(service);
+                } catch (IllegalStateException | IllegalArgumentException gone) {
+                    // the component is already deactivated
+                }
+            }
+        };
     }
 
     private static Class<?> loadClass(Bundle bundle, String className) {
