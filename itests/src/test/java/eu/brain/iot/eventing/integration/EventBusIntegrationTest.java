@@ -111,16 +111,8 @@ class EventBusIntegrationTest {
 
     @Test
     void aBlockedConsumerDoesNotDelayTheOthers() throws Exception {
-        CountDownLatch release = new CountDownLatch(1);
-        AtomicInteger blockedCount = new AtomicInteger();
-        behaviours.typed((SmartBehaviour<PositionEvent>) e -> {
-            blockedCount.incrementAndGet();
-            try {
-                release.await();
-            } catch (InterruptedException ie) {
-                Thread.currentThread().interrupt();
-            }
-        }, null, PositionEvent.class);
+        GatedBehaviour blocked = new GatedBehaviour();
+        behaviours.typed(blocked, null, PositionEvent.class);
         Recorder fast = new Recorder();
         behaviours.typed(fast, null, PositionEvent.class);
         awaitConsumers(2);
@@ -130,11 +122,11 @@ class EventBusIntegrationTest {
         }
         // Every event reaches the fast consumer while the other one is still stuck in its first event.
         await().atMost(DEADLINE).until(() -> fast.events.size() == 1_000);
-        assertThat(blockedCount.get()).isEqualTo(1);
+        assertThat(blocked.received()).isEqualTo(1);
         assertThat(stats.consumers()).anySatisfy(c -> assertThat(c.queueDepth).isGreaterThanOrEqualTo(998));
 
-        release.countDown();
-        await().atMost(DEADLINE).until(() -> blockedCount.get() == 1_000);
+        blocked.open();
+        await().atMost(DEADLINE).until(() -> blocked.received() == 1_000);
     }
 
     @Test

@@ -6,8 +6,6 @@ import static org.awaitility.Awaitility.await;
 
 import java.time.Duration;
 import java.util.Hashtable;
-import java.util.concurrent.CountDownLatch;
-import java.util.concurrent.atomic.AtomicInteger;
 
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
@@ -20,7 +18,6 @@ import org.osgi.test.common.annotation.InjectService;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.EventBusOverflowException;
-import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 
 /** The documented overflow policy: bounded queues, the publisher waits, then gets a clear exception. */
@@ -49,22 +46,14 @@ class OverflowIntegrationTest {
             EventBusStatistics stats = context.getService(context.getServiceReference(EventBusStatistics.class));
 
             int baseline = stats.consumers().size();
-            CountDownLatch release = new CountDownLatch(1);
-            AtomicInteger slowCount = new AtomicInteger();
-            behaviours.typed((SmartBehaviour<PositionEvent>) e -> {
-                slowCount.incrementAndGet();
-                try {
-                    release.await();
-                } catch (InterruptedException ie) {
-                    Thread.currentThread().interrupt();
-                }
-            }, null, PositionEvent.class);
+            GatedBehaviour slow = new GatedBehaviour();
+            behaviours.typed(slow, null, PositionEvent.class);
             Recorder fast = new Recorder();
             behaviours.typed(fast, null, PositionEvent.class);
             await().atMost(DEADLINE).untilAsserted(() -> assertThat(stats.consumers()).hasSize(baseline + 2));
 
             bus.deliver(new PositionEvent("robot1", 0, 0, 0));
-            await().atMost(DEADLINE).until(() -> slowCount.get() == 1);
+            await().atMost(DEADLINE).until(() -> slow.received() == 1);
             for (int i = 1; i <= 10; i++) {
                 bus.deliver(new PositionEvent("robot1", 0, 0, i)); // fills the slow queue to its capacity
             }
@@ -76,8 +65,8 @@ class OverflowIntegrationTest {
             assertThat(Duration.ofNanos(System.nanoTime() - start)).isGreaterThanOrEqualTo(Duration.ofMillis(300));
 
             await().atMost(DEADLINE).until(() -> fast.events.size() == 11);
-            release.countDown();
-            await().atMost(DEADLINE).until(() -> slowCount.get() == 11);
+            slow.open();
+            await().atMost(DEADLINE).until(() -> slow.received() == 11);
             // the refused event reached no one, not even the consumer that had room
             assertThat(fast.events).extracting(e -> ((PositionEvent) e).seq).doesNotContain(11L);
         } finally {
