@@ -20,6 +20,10 @@ public final class BusBenchmark {
     }
 
     public static void main(String[] args) throws Exception {
+        if (Settings.wantsHelp(args)) {
+            System.out.print(Settings.usage());
+            return;
+        }
         Settings settings;
         try {
             settings = Settings.parse(args, defaultBundleDir());

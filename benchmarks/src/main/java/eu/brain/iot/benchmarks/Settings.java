@@ -43,9 +43,6 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
         int latencySeconds = 5;
         for (int i = 0; i < args.length; i++) {
             String option = args[i];
-            if (option.equals("--help") || option.equals("-h")) {
-                throw new BenchmarkException(usage());
-            }
             if (i + 1 >= args.length) {
                 throw new BenchmarkException("option " + option + " needs a value\n" + usage());
             }
@@ -90,7 +87,11 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
         return String.join(",", Contender.all().stream().map(Contender::key).toList());
     }
 
-    private static String usage() {
+    static boolean wantsHelp(String[] args) {
+        return Arrays.asList(args).contains("--help") || Arrays.asList(args).contains("-h");
+    }
+
+    static String usage() {
         return USAGE.formatted(keys());
     }
 
