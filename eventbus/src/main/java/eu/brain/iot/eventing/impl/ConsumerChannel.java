@@ -41,10 +41,18 @@ final class ConsumerChannel {
     private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
     /** Slots reserved by publishers; incremented before an envelope is queued. */
     private final AtomicLong offered = new AtomicLong();
-    /** Envelopes taken off the queue; written by the delivery thread only. */
-    private volatile long taken;
-    private volatile long delivered;
-    private volatile long failures;
+    /**
+     * Envelopes taken off the queue; written by the delivery thread only, with ordered (release) writes, which
+     * are cheap on the hot path; readers may see a slightly old value, which only makes them more careful.
+     */
+    private final AtomicLong taken = new AtomicLong();
+    /**
+     * Publishers' last reading of {@link #taken}: re-read only when the queue looks full, so that publishers do
+     * not pull the delivery thread's cache line on every event. A stale value errs on the safe side.
+     */
+    private volatile long takenSeen;
+    private final AtomicLong delivered = new AtomicLong();
+    private final AtomicLong failures = new AtomicLong();
     /** Set by the delivery thread before it parks; publishers unpark it when they see it. */
     private volatile boolean waiting;
     private volatile boolean closed;
@@ -54,6 +62,8 @@ final class ConsumerChannel {
     /** The behaviour object, fetched on the first delivery. */
     private Object behaviour;
     private final Map<Class<?>, Class<?>> ownClassOf = new HashMap<>();
+    /** Kept in a field: a method reference written at the call site would be allocated for every event. */
+    private final java.util.function.Function<Class<?>, Class<?>> ownClassFunction = this::ownClass;
     private final Map<String, Class<?>> ownClassByName = new HashMap<>();
     private final Set<String> failureLogged = new HashSet<>();
 
@@ -72,9 +82,14 @@ final class ConsumerChannel {
 
     /** Reserve room for one envelope. @return false when the queue is full (nothing reserved then) */
     boolean tryReserve() {
-        if (offered.incrementAndGet() - taken > capacity) {
-            offered.decrementAndGet();
-            return false;
+        long reserved = offered.incrementAndGet();
+        if (reserved - takenSeen > capacity) {
+            long current = taken.get();
+            takenSeen = current;
+            if (reserved - current > capacity) {
+                offered.decrementAndGet();
+                return false;
+            }
         }
         return true;
     }
@@ -101,7 +116,7 @@ final class ConsumerChannel {
     }
 
     int depth() {
-        return (int) Math.max(0, offered.get() - taken);
+        return (int) Math.max(0, offered.get() - taken.get());
     }
 
     /** Stop delivering: queued events are discarded and counted; the thread ends. */
@@ -123,7 +138,7 @@ final class ConsumerChannel {
                     continue;
                 }
             }
-            taken = taken + 1;
+            taken.lazySet(taken.get() + 1);
             if (closed) {
                 discard(envelope);
                 break;
@@ -182,12 +197,12 @@ final class ConsumerChannel {
                 SmartBehaviour<BrainIoTEvent> typed = (SmartBehaviour<BrainIoTEvent>) behaviour;
                 typed.notify(toTyped(envelope));
             }
-            delivered = delivered + 1;
+            delivered.lazySet(delivered.get() + 1);
             envelope.counters.delivered.increment();
         } catch (OutOfMemoryError e) {
             throw e;
         } catch (Throwable t) {
-            failures = failures + 1;
+            failures.lazySet(failures.get() + 1);
             envelope.counters.failed.increment();
             if (failureLogged.add(envelope.type())) {
                 log.error("Smart behaviour {} (bundle {}) failed on an event of type {}; it keeps receiving "
@@ -207,7 +222,7 @@ final class ConsumerChannel {
     @SuppressWarnings("unchecked")
     private BrainIoTEvent toTyped(Envelope envelope) {
         if (envelope.payload instanceof BrainIoTEvent event) {
-            Class<?> own = ownClassOf.computeIfAbsent(event.getClass(), this::ownClass);
+            Class<?> own = ownClassOf.computeIfAbsent(event.getClass(), ownClassFunction);
             if (own == event.getClass()) {
                 return envelope.exclusive ? event : EventCopier.copyEvent(event);
             }
@@ -254,8 +269,8 @@ final class ConsumerChannel {
         s.lastResort = spec.lastResort();
         s.untyped = spec.untyped();
         s.queueDepth = depth();
-        s.delivered = delivered;
-        s.failures = failures;
+        s.delivered = delivered.get();
+        s.failures = failures.get();
         return s;
     }
 }
