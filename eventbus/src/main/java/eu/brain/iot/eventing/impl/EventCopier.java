@@ -172,9 +172,8 @@ final class EventCopier {
                     }
                 }
                 return new Plan(true, cloneable, ctor, handles.toArray(VarHandle[]::new));
-            } catch (NoSuchMethodException e) {
-                return new Plan(false, false, null, new VarHandle[0]);
-            } catch (IllegalAccessException e) {
+            } catch (NoSuchMethodException | IllegalAccessException notData) {
+                // not a data object we can build or read: its instances are shared as they are
                 return new Plan(false, false, null, new VarHandle[0]);
             }
         }
