@@ -24,11 +24,12 @@ import eu.brain.iot.eventing.impl.RouteTable.Route;
  * The bus core, free of OSGi wiring so that it can be tested and benchmarked on its own.
  * <p>
  * {@code deliver} runs on the publisher's thread: it snapshots the event, finds its route, reserves a slot in the
- * queue of every target behaviour (all or none, waiting up to the overflow timeout), and queues the snapshot.
- * Each behaviour's own thread then makes its copy and calls it (see {@link ConsumerChannel}).
+ * queue of every target behaviour (all or none, waiting up to the overflow timeout), queues the snapshot, and
+ * wakes at most one delivery worker. The workers of the {@link DeliveryPool} then take turns on the behaviours
+ * with queued events: each makes its behaviour's copy and calls it (see {@link ConsumerChannel}).
  * <p>
  * Ownership: {@link #routes} is replaced, never changed, under {@link #consumersLock}, which also guards
- * {@link #channels}; publishers read {@link #routes} without locking.
+ * {@link #channels}; publishers read {@link #routes} without locking. The pool lives as long as the bus.
  */
 final class AsyncEventBus implements EventBus {
 
@@ -37,7 +38,7 @@ final class AsyncEventBus implements EventBus {
     private final String sourceNode;
     private final int queueCapacity;
     private final long overflowTimeoutNanos;
-    private final long idleNanos;
+    private final DeliveryPool pool;
     private final Logger log;
 
     private final Object consumersLock = new Object();
@@ -45,15 +46,17 @@ final class AsyncEventBus implements EventBus {
     private volatile RouteTable routes = RouteTable.EMPTY;
     private final ConcurrentHashMap<String, EventTypeCounters> counters = new ConcurrentHashMap<>();
 
-    AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, long idleMicros, Logger log) {
+    AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, DeliveryPool.Settings delivery,
+            Logger log) {
         if (queueCapacity < 1) {
             throw new IllegalArgumentException("queue capacity must be at least 1, was " + queueCapacity);
         }
         this.sourceNode = sourceNode;
         this.queueCapacity = queueCapacity;
         this.overflowTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(0, overflowTimeoutMillis));
-        this.idleNanos = TimeUnit.MICROSECONDS.toNanos(Math.max(0, idleMicros));
         this.log = log;
+        this.pool = new DeliveryPool(delivery, log);
+        pool.start();
     }
 
     @Override
@@ -109,8 +112,12 @@ final class AsyncEventBus implements EventBus {
         reserveAll(targets, typeCounters.eventType);
         typeCounters.published.increment();
         Envelope envelope = new Envelope(snapshot, typeCounters, targets.length == 1);
+        boolean madeReady = false;
         for (ConsumerChannel target : targets) {
-            target.enqueue(envelope);
+            madeReady |= target.enqueue(envelope);
+        }
+        if (madeReady) {
+            pool.signal(); // once per event, not once per behaviour: workers pass the wake-up on
         }
     }
 
@@ -161,8 +168,7 @@ final class AsyncEventBus implements EventBus {
 
     /** Start delivering to a behaviour. */
     void addConsumer(ConsumerSpec spec) {
-        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, idleNanos, log);
-        channel.start();
+        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log);
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);
             routes = new RouteTable(channels.values());
@@ -183,13 +189,19 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
-    /** Stop every delivery thread. */
+    /** Stop delivering: behaviours are closed first, so that the workers clean them up before they end. */
     void close() {
         synchronized (consumersLock) {
             channels.values().forEach(ConsumerChannel::close);
             channels.clear();
             routes = RouteTable.EMPTY;
         }
+        pool.shutdown();
+    }
+
+    /** The delivery workers alive, stalled or not. */
+    int workerCount() {
+        return pool.workerCount();
     }
 
     List<EventTypeStatistics> eventTypes() {

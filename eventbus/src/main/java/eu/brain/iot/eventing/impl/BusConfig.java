@@ -14,7 +14,17 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
             + "EventBusOverflowException (milliseconds)")
     long overflow_timeout_ms() default 5_000;
 
-    @AttributeDefinition(description = "How long an idle delivery thread keeps yielding before it sleeps "
+    @AttributeDefinition(description = "Delivery workers that take turns on the behaviours' queues; 0 means one "
+            + "per available processor. More workers than cores only adds wake-ups.")
+    int delivery_workers() default 0;
+
+    @AttributeDefinition(description = "How long an idle delivery worker keeps yielding before it sleeps "
             + "(microseconds). Longer saves wake-ups at high event rates; shorter saves CPU at low rates.")
     long idle_spin_us() default 50;
+
+    @AttributeDefinition(description = "When a behaviour has held its delivery worker this long in one notify() "
+            + "call while waiting (milliseconds, at least 1; four times as long while computing or in blocking I/O), "
+            + "the bus starts another worker so that the other behaviours keep receiving. Workers beyond "
+            + "delivery.workers retire after a second without work.")
+    long stall_threshold_ms() default 5;
 }

@@ -1,83 +1,87 @@
 package eu.brain.iot.eventing.impl;
 
+import java.lang.invoke.MethodHandles;
+import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
-import java.util.HashMap;
-import java.util.HashSet;
-import java.util.Map;
-import java.util.Set;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.concurrent.locks.LockSupport;
 
 import org.osgi.service.log.Logger;
 
-import eu.brain.iot.eventing.api.BrainIoTEvent;
-import eu.brain.iot.eventing.api.SmartBehaviour;
-import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 
 /**
- * The queue and the delivery thread of one behaviour.
+ * The queue of one behaviour, and its turns on the delivery workers of the {@link DeliveryPool}.
  * <p>
- * Ownership: publishers only append to {@link #queue} and reserve room through {@link #offered}; everything else
- * ({@link #taken}, the class caches, the failure log set, the calls into the behaviour) belongs to the channel's
- * own delivery thread. One thread per behaviour is what isolates behaviours from each other: a behaviour that
- * blocks holds only its own thread, and its events stay in publish order because a single thread takes them
- * from a FIFO queue.
+ * Scheduling: {@link #scheduled} is the behaviour's turn token. The publisher that queues an event into an idle
+ * channel takes the token and puts the channel into the pool's run queue; a worker takes it from there, delivers
+ * up to {@link #BATCH} events ({@link #runTurn}), then either puts it back at the end of the run queue (events
+ * remain: one busy behaviour cannot starve the others) or gives the token back. Only the token holder delivers,
+ * so a behaviour is never called twice at once, and since it takes events from one FIFO queue, it sees them in
+ * publish order (per publishing thread).
+ * <p>
+ * Ownership: publishers only append to {@link #queue}, reserve room through {@link #offered} and may take a free
+ * token. Everything else ({@link #taken}, the {@link BehaviourCaller} with the behaviour object and its caches)
+ * belongs to the token holder. {@link #runner} is written by the holder's worker and, to interrupt it, by
+ * {@link #close}. Once closed, the token is never given back: the last holder discards what is queued and gives
+ * the behaviour object back, exactly once.
  * <p>
  * Memory is bounded by {@code capacity}: {@code offered - taken} never exceeds it.
  */
 final class ConsumerChannel {
 
-    /** Spins before parking: cheap wake-up when events arrive back to back, no CPU burnt when idle. */
-    private static final int SPINS = 64;
+    /**
+     * Events a worker delivers to one behaviour per turn: large enough to amortise the scheduling (a few atomic
+     * operations per turn), small enough that other behaviours get a turn soon.
+     */
+    static final int BATCH = 64;
+
+    /** The value of {@link #runner} while {@link #close} interrupts the worker; see {@link #leaveTurn}. */
+    private static final Object INTERRUPTING = new Object();
+    private static final VarHandle SCHEDULED;
+    private static final VarHandle RUNNER;
+
+    static {
+        try {
+            MethodHandles.Lookup lookup = MethodHandles.lookup();
+            SCHEDULED = lookup.findVarHandle(ConsumerChannel.class, "scheduled", boolean.class);
+            RUNNER = lookup.findVarHandle(ConsumerChannel.class, "runner", Object.class);
+        } catch (ReflectiveOperationException e) {
+            throw new ExceptionInInitializerError(e);
+        }
+    }
 
     final ConsumerSpec spec;
     private final int capacity;
-    /** How long an idle delivery thread keeps yielding its core before it parks. */
-    private final long idleNanos;
+    private final DeliveryPool pool;
     private final Logger log;
+    private final BehaviourCaller caller;
 
     private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
     /** Slots reserved by publishers; incremented before an envelope is queued. */
     private final AtomicLong offered = new AtomicLong();
     /**
-     * Envelopes taken off the queue; written by the delivery thread only, with ordered (release) writes, which
-     * are cheap on the hot path; readers may see a slightly old value, which only makes them more careful.
+     * Envelopes taken off the queue; written by the token holder only, with ordered (release) writes, which are
+     * cheap on the hot path; readers may see a slightly old value, which only makes them more careful.
      */
     private final AtomicLong taken = new AtomicLong();
     /**
      * Publishers' last reading of {@link #taken}: re-read only when the queue looks full, so that publishers do
-     * not pull the delivery thread's cache line on every event. A stale value errs on the safe side.
+     * not pull the delivering worker's cache line on every event. A stale value errs on the safe side.
      */
     private volatile long takenSeen;
-    private final AtomicLong delivered = new AtomicLong();
-    private final AtomicLong failures = new AtomicLong();
-    /** Set by the delivery thread before it parks; publishers unpark it when they see it. */
-    private volatile boolean waiting;
+    /** The turn token: set while the channel waits in the run queue or a worker delivers its events. */
+    private volatile boolean scheduled;
     private volatile boolean closed;
-    private final Thread thread;
+    /** The worker thread inside a turn, {@link #INTERRUPTING}, or {@code null}. */
+    private volatile Object runner;
 
-    // Owned by the delivery thread.
-    /** The behaviour object, fetched on the first delivery. */
-    private Object behaviour;
-    private final Map<Class<?>, Class<?>> ownClassOf = new HashMap<>();
-    /** Kept in a field: a method reference written at the call site would be allocated for every event. */
-    private final java.util.function.Function<Class<?>, Class<?>> ownClassFunction = this::ownClass;
-    private final Map<String, Class<?>> ownClassByName = new HashMap<>();
-    private final Set<String> failureLogged = new HashSet<>();
-
-    ConsumerChannel(ConsumerSpec spec, int capacity, long idleNanos, Logger log) {
+    ConsumerChannel(ConsumerSpec spec, int capacity, DeliveryPool pool, Logger log) {
         this.spec = spec;
         this.capacity = capacity;
-        this.idleNanos = idleNanos;
+        this.pool = pool;
         this.log = log;
-        this.thread = new Thread(this::run, "brain-iot-bus[" + spec.name() + "]");
-        this.thread.setDaemon(true);
-    }
-
-    void start() {
-        thread.start();
+        this.caller = new BehaviourCaller(spec, log);
     }
 
     /** Reserve room for one envelope. @return false when the queue is full (nothing reserved then) */
@@ -99,16 +103,23 @@ final class ConsumerChannel {
         offered.decrementAndGet();
     }
 
-    /** Queue an envelope for which a slot was reserved. */
-    void enqueue(Envelope envelope) {
+    /**
+     * Queue an envelope for which a slot was reserved.
+     *
+     * @return true if the channel was idle and is now in the run queue: the publisher then calls
+     *         {@link DeliveryPool#signal()}, once per event however many behaviours it reached
+     */
+    boolean enqueue(Envelope envelope) {
         queue.offer(envelope);
-        if (waiting) {
-            LockSupport.unpark(thread);
+        boolean madeReady = !scheduled && SCHEDULED.compareAndSet(this, false, true);
+        if (madeReady) {
+            pool.ready(this);
         }
         if (closed) {
-            // The behaviour left while we were queueing: nobody will take this, so count it now.
+            // The behaviour left while we were queueing: its last turn may be over already, so count it now.
             discardPending();
         }
+        return madeReady;
     }
 
     boolean isClosed() {
@@ -119,144 +130,97 @@ final class ConsumerChannel {
         return (int) Math.max(0, offered.get() - taken.get());
     }
 
-    /** Stop delivering: queued events are discarded and counted; the thread ends. */
+    /** Events taken so far: the stall watchdog's measure of progress inside a turn. */
+    long takenCount() {
+        return taken.get();
+    }
+
+    /** Stop delivering: queued events are discarded and counted, the behaviour object is given back. */
     void close() {
         closed = true;
-        LockSupport.unpark(thread);
-        if (Thread.currentThread() != thread) {
-            // A behaviour blocked in notify() is being taken away: wake it so that its thread can end.
+        Object worker = runner;
+        if (worker instanceof Thread thread && thread != Thread.currentThread()
+                && RUNNER.compareAndSet(this, thread, INTERRUPTING)) {
+            // A behaviour blocked in notify() is being taken away: wake it so that its worker comes back.
             thread.interrupt();
+            runner = null;
+        }
+        if (!scheduled && SCHEDULED.compareAndSet(this, false, true)) {
+            // Idle: a worker still has to give the behaviour object back, on a delivery thread as always.
+            pool.ready(this);
+            pool.signal();
         }
     }
 
-    private void run() {
-        while (!closed) {
-            Envelope envelope = queue.poll();
-            if (envelope == null) {
-                envelope = awaitEnvelope();
-                if (envelope == null) {
-                    continue;
-                }
-            }
-            taken.lazySet(taken.get() + 1);
-            if (closed) {
-                discard(envelope);
-                break;
-            }
-            handle(envelope);
-        }
-        discardPending();
-        if (behaviour != null) {
-            behaviour = null;
-            spec.target().release();
-        }
-    }
-
-    private Envelope awaitEnvelope() {
-        // Parking costs the publisher an unpark (a system call) per event, which at high rates with more
-        // behaviours than cores costs more than the delivery itself. So an idle delivery thread first spins,
-        // then yields its core for a short while (events usually keep coming in a burst), and parks only after
-        // {@code idleNanos} without an event.
-        for (int i = 0; i < SPINS; i++) {
-            Thread.onSpinWait();
-            Envelope e = queue.poll();
-            if (e != null) {
-                return e;
-            }
-        }
-        long idleSince = System.nanoTime();
-        while (System.nanoTime() - idleSince < idleNanos) {
-            Thread.yield();
-            Envelope e = queue.poll();
-            if (e != null || closed) {
-                return e;
-            }
-        }
-        waiting = true;
-        Envelope e = queue.poll();
-        if (e == null && !closed) {
-            LockSupport.park(this);
-        }
-        waiting = false;
-        Thread.interrupted(); // an interrupt aimed at a notify() call must not end later parks early
-        return e;
-    }
-
-    private void handle(Envelope envelope) {
+    /** One turn, run by the worker that took this channel from the run queue (the token holder). */
+    void runTurn() {
+        Thread worker = Thread.currentThread();
+        runner = worker;
         try {
-            if (behaviour == null) {
-                behaviour = spec.target().get();
-                if (behaviour == null) {
-                    throw new IllegalStateException("the behaviour service is no longer available");
+            for (int i = 0; i < BATCH && !closed; i++) {
+                Envelope envelope = queue.poll();
+                if (envelope == null) {
+                    break;
                 }
+                taken.lazySet(taken.get() + 1);
+                caller.call(envelope);
             }
-            if (spec.untyped()) {
-                ((UntypedSmartBehaviour) behaviour).notify(envelope.type(), toMap(envelope));
+        } finally {
+            leaveTurn(worker);
+            settle();
+        }
+    }
+
+    private void leaveTurn(Thread worker) {
+        if (!RUNNER.compareAndSet(this, worker, null)) {
+            // close() is interrupting this worker right now: wait until it has, so that its interrupt cannot
+            // land in the next behaviour's notify().
+            while (runner == INTERRUPTING) {
+                Thread.onSpinWait();
+            }
+        }
+        // An interrupt aimed at this behaviour, or left set by it, must not reach the next behaviour.
+        Thread.interrupted();
+    }
+
+    /** End of a turn: requeue, give the token back, or, once closed, clean up for good. */
+    private void settle() {
+        if (closed) {
+            retire();
+            return;
+        }
+        if (!queue.isEmpty()) {
+            pool.ready(this);
+            return;
+        }
+        scheduled = false;
+        // A publisher (or close()) may have found the token still taken just before we gave it back. Both sides
+        // write first and read the other's state second, so at least one of them sees the other: look again.
+        if ((closed || !queue.isEmpty()) && SCHEDULED.compareAndSet(this, false, true)) {
+            if (closed) {
+                retire();
             } else {
-                @SuppressWarnings("unchecked")
-                SmartBehaviour<BrainIoTEvent> typed = (SmartBehaviour<BrainIoTEvent>) behaviour;
-                typed.notify(toTyped(envelope));
-            }
-            delivered.lazySet(delivered.get() + 1);
-            envelope.counters.delivered.increment();
-        } catch (OutOfMemoryError e) {
-            throw e;
-        } catch (Throwable t) {
-            failures.lazySet(failures.get() + 1);
-            envelope.counters.failed.increment();
-            if (failureLogged.add(envelope.type())) {
-                log.error("Smart behaviour {} (bundle {}) failed on an event of type {}; it keeps receiving "
-                        + "events, and further failures on this type are counted in the bus statistics "
-                        + "(Gogo: bus:stats) rather than logged.", spec.name(), spec.bundle(), envelope.type(), t);
+                pool.ready(this);
             }
         }
     }
 
-    @SuppressWarnings("unchecked")
-    private Map<String, ?> toMap(Envelope envelope) {
-        return envelope.payload instanceof Map<?, ?> map
-                ? EventMaps.copyMap((Map<String, ?>) map)
-                : EventMaps.toMap(envelope.payload);
-    }
-
-    @SuppressWarnings("unchecked")
-    private BrainIoTEvent toTyped(Envelope envelope) {
-        if (envelope.payload instanceof BrainIoTEvent event) {
-            Class<?> own = ownClassOf.computeIfAbsent(event.getClass(), ownClassFunction);
-            if (own == event.getClass()) {
-                return envelope.exclusive ? event : EventCopier.copyEvent(event);
-            }
-            return (BrainIoTEvent) EventMaps.convert(event, own);
-        }
-        Class<?> own = ownClassByName.computeIfAbsent(envelope.type(), spec.classes());
-        if (own == null) {
-            throw new IllegalStateException("bundle " + spec.bundle() + " cannot load the event class "
-                    + envelope.type() + " that it declares it consumes");
-        }
-        return (BrainIoTEvent) EventMaps.fromMap((Map<String, ?>) envelope.payload, own);
-    }
-
-    /** The class this behaviour's bundle sees under the event class's name; the event's own class if none. */
-    private Class<?> ownClass(Class<?> eventClass) {
-        Class<?> own = spec.classes().apply(eventClass.getName());
-        return own == null ? eventClass : own;
+    private void retire() {
+        discardPending();
+        caller.releaseBehaviour();
     }
 
     private void discardPending() {
         int count = 0;
         Envelope e;
         while ((e = queue.poll()) != null) {
-            discard(e);
+            e.counters.discarded.increment();
             count++;
         }
         if (count > 0) {
             log.warn("Smart behaviour {} (bundle {}) went away with {} queued events; they were discarded "
                     + "and counted as 'discarded' in the bus statistics.", spec.name(), spec.bundle(), count);
         }
-    }
-
-    private void discard(Envelope e) {
-        e.counters.discarded.increment();
     }
 
     ConsumerStatistics statistics() {
@@ -269,8 +233,8 @@ final class ConsumerChannel {
         s.lastResort = spec.lastResort();
         s.untyped = spec.untyped();
         s.queueDepth = depth();
-        s.delivered = delivered.get();
-        s.failures = failures.get();
+        s.delivered = caller.delivered();
+        s.failures = caller.failures();
         return s;
     }
 }

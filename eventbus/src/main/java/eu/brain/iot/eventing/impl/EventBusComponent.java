@@ -5,6 +5,7 @@ import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
 
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
@@ -45,6 +46,8 @@ import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
 public final class EventBusComponent implements EventBus, EventBusStatistics {
 
     static final String PID = "eu.brain.iot.eventing";
+    /** How long a delivery worker beyond {@code delivery.workers} (added for a stalled behaviour) stays idle. */
+    static final long WORKER_KEEP_ALIVE_NANOS = TimeUnit.SECONDS.toNanos(1);
 
     private final AsyncEventBus bus;
     private final Logger log;
@@ -54,7 +57,14 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         this.bus = new AsyncEventBus(context.getProperty(Constants.FRAMEWORK_UUID), config.queue_capacity(),
-                config.overflow_timeout_ms(), config.idle_spin_us(), log);
+                config.overflow_timeout_ms(), deliverySettings(config), log);
+    }
+
+    static DeliveryPool.Settings deliverySettings(BusConfig config) {
+        int workers = config.delivery_workers() > 0 ? config.delivery_workers()
+                : Runtime.getRuntime().availableProcessors();
+        return new DeliveryPool.Settings(workers, TimeUnit.MICROSECONDS.toNanos(config.idle_spin_us()),
+                TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_threshold_ms())), WORKER_KEEP_ALIVE_NANOS);
     }
 
     @Deactivate
