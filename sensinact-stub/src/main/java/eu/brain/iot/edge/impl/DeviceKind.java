@@ -1,0 +1,26 @@
+package eu.brain.iot.edge.impl;
+
+import java.net.URI;
+import java.util.List;
+import java.util.Map;
+
+/** The two kinds of device of the fleet: where each answers, and the actions its provider offers. */
+enum DeviceKind {
+    ROBOT("robot", "robot_local_control/state",
+            Map.of("control", List.of("goTo(x,y)", "pick", "place", "cancel(missionType?,missionId?)"))),
+    DOOR("door", "door_controller/state", Map.of("control", List.of("open", "close")));
+
+    final String label;
+    private final String statePath;
+    final Map<String, List<String>> actions;
+
+    DeviceKind(String label, String statePath, Map<String, List<String>> actions) {
+        this.label = label;
+        this.statePath = statePath;
+        this.actions = actions;
+    }
+
+    URI stateUri(URI base, String id) {
+        return base.resolve(id + "/" + statePath);
+    }
+}

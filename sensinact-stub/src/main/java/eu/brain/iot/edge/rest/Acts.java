@@ -1,0 +1,136 @@
+package eu.brain.iot.edge.rest;
+
+import java.io.IOException;
+import java.util.Map;
+import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CompletionException;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.TimeoutException;
+import java.util.concurrent.atomic.AtomicBoolean;
+
+import org.osgi.service.log.Logger;
+
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.UnknownResourceException;
+import jakarta.servlet.AsyncContext;
+import jakarta.servlet.AsyncEvent;
+import jakarta.servlet.AsyncListener;
+import jakarta.servlet.http.HttpServletRequest;
+import jakarta.servlet.http.HttpServletResponse;
+
+/**
+ * The ACT side of {@code /sensinact}: {@code POST .../resources/{action}/act} runs the action through
+ * {@link DeviceModel#act} and answers with the device's outcome. The request is asynchronous: no container thread
+ * waits for the robot, and the wait is bounded ({@code act.timeout.ms}, then 504).
+ * <p>
+ * Status codes: 200 accepted; 409 the device refused (its reason in {@code error}); 502 the device could not be
+ * reached; 504 no answer in time (the command may still be carried out); 404 unknown provider or action; 400 bad
+ * parameters or malformed JSON; 413 body too large.
+ */
+final class Acts {
+
+    static final String EXAMPLE = "{\"x\":9,\"y\":7} (goTo) or {} (open, close, pick, place)";
+
+    private final DeviceModel model;
+    private final long timeoutMillis;
+    private final int maxBodyBytes;
+    private final Logger log;
+
+    Acts(DeviceModel model, long timeoutMillis, int maxBodyBytes, Logger log) {
+        this.model = model;
+        this.timeoutMillis = timeoutMillis;
+        this.maxBodyBytes = maxBodyBytes;
+        this.log = log;
+    }
+
+    void act(Route r, HttpServletRequest req, HttpServletResponse resp) throws IOException {
+        Map<String, Object> params = ActBody.parameters(req.getInputStream(), maxBodyBytes, EXAMPLE);
+        CompletionStage<CommandOutcome> stage;
+        try {
+            stage = model.act(r.provider(), r.service(), r.resource(), params);
+        } catch (UnknownResourceException e) {
+            throw HttpError.notFound(e.getMessage());
+        } catch (IllegalArgumentException e) {
+            String received = Replies.MAPPER.writeValueAsString(params);
+            throw HttpError.badRequest(e.getMessage() + "; body received: " + received);
+        }
+        AsyncContext async = req.startAsync();
+        AtomicBoolean answered = new AtomicBoolean();
+        // A backstop only: the bounded wait below answers first.
+        async.setTimeout(timeoutMillis + 5_000);
+        async.addListener(new AsyncListener() {
+            @Override
+            public void onTimeout(AsyncEvent event) {
+                answer(async, answered, 504, Replies.error(504, "no answer in time"));
+            }
+
+            @Override
+            public void onComplete(AsyncEvent event) {
+            }
+
+            @Override
+            public void onError(AsyncEvent event) {
+                answered.set(true); // the client is gone: nothing to answer
+            }
+
+            @Override
+            public void onStartAsync(AsyncEvent event) {
+            }
+        });
+        // A copy, so that the timeout never completes the edge's own future.
+        CompletableFuture<CommandOutcome> bounded = stage.toCompletableFuture().thenApply(o -> o)
+                .orTimeout(timeoutMillis, TimeUnit.MILLISECONDS);
+        // Answer on a container thread (async.start), never on the edge's or the HTTP client's thread.
+        bounded.whenComplete((outcome, error) -> startQuietly(async, () -> {
+            Map<String, Object> body;
+            int status;
+            if (error != null) {
+                Throwable cause = error instanceof CompletionException && error.getCause() != null ? error.getCause()
+                        : error;
+                status = cause instanceof TimeoutException ? 504 : 502;
+                body = Replies.error(status, status == 504
+                        ? r.provider() + " did not answer " + r.resource() + " within " + timeoutMillis
+                                + " ms (act.timeout.ms); it may still carry it out: follow GET /sensinact/providers/"
+                                + r.provider()
+                        : "the edge could not run " + r.resource() + " on " + r.provider() + ": " + cause);
+            } else {
+                status = outcome.accepted ? 200 : outcome.status == 0 ? 502 : 409;
+                body = Views.outcome(r.provider(), r.service(), r.resource(), outcome);
+                if (!outcome.accepted) {
+                    body.put("error", status == 502 ? r.provider() + " could not be reached: " + outcome.reason
+                            : r.provider() + " refused " + r.resource() + ": " + outcome.reason);
+                }
+                body.put("status", status);
+            }
+            answer(async, answered, status, body);
+        }));
+    }
+
+    /** The container refuses a new task once the request is over (client gone, backstop timeout): nothing to do. */
+    private static void startQuietly(AsyncContext async, Runnable task) {
+        try {
+            async.start(task);
+        } catch (IllegalStateException e) {
+            // the request already ended
+        }
+    }
+
+    private void answer(AsyncContext async, AtomicBoolean answered, int status, Map<String, Object> body) {
+        if (!answered.compareAndSet(false, true)) {
+            return;
+        }
+        try {
+            Replies.json((HttpServletResponse) async.getResponse(), status, body);
+        } catch (IOException | RuntimeException e) {
+            log.debug("could not answer an ACT (the client may have gone): " + e);
+        } finally {
+            try {
+                async.complete();
+            } catch (IllegalStateException e) {
+                // already completed by the container (client gone, timeout)
+            }
+        }
+    }
+}

@@ -1,0 +1,128 @@
+package eu.brain.iot.edge.rest;
+
+import java.io.IOException;
+import java.util.Enumeration;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletAsyncSupported;
+import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletName;
+import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPattern;
+
+import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.ProviderSnapshot;
+import jakarta.servlet.AsyncContext;
+import jakarta.servlet.Servlet;
+import jakarta.servlet.http.HttpServlet;
+import jakarta.servlet.http.HttpServletRequest;
+import jakarta.servlet.http.HttpServletResponse;
+
+/**
+ * {@code GET /sensinact/subscribe[?provider=P][&service=S]}: a Server-Sent Events stream, one
+ * {@code data: {resource as JSON}} event per change of the device model, until the client goes away. Each client
+ * is an {@link SseClient}; one shared thread writes to all of them and sends the heartbeats.
+ */
+@Component(service = Servlet.class, configurationPid = RestConfig.PID)
+@HttpWhiteboardServletName("eu.brain.iot.edge.rest.subscribe")
+@HttpWhiteboardServletPattern(Route.ROOT + "/subscribe")
+@HttpWhiteboardServletAsyncSupported // a stream must not hold a container thread
+public final class SubscribeServlet extends HttpServlet {
+    private static final long serialVersionUID = 1L;
+    private static final List<String> PARAMETERS = List.of("provider", "service");
+
+    private final transient DeviceModel model;
+    private final transient Logger log;
+    private final int capacity;
+    private final transient Set<SseClient> clients = ConcurrentHashMap.newKeySet();
+    private final transient ScheduledExecutorService writer = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "edge-sse");
+        t.setDaemon(true);
+        return t;
+    });
+
+    @Activate
+    public SubscribeServlet(@Reference DeviceModel model, RestConfig config,
+            @Reference(service = LoggerFactory.class) Logger log) {
+        this.model = model;
+        this.log = log;
+        this.capacity = (int) SensinactServlet.positive("sse.queue.capacity", config.sse_queue_capacity());
+        long heartbeat = SensinactServlet.positive("sse.heartbeat.ms", config.sse_heartbeat_ms());
+        writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::heartbeat), heartbeat, heartbeat,
+                TimeUnit.MILLISECONDS);
+    }
+
+    @Deactivate
+    void deactivate() {
+        clients.forEach(c -> c.close("the edge's REST service stops", false));
+        writer.shutdown();
+    }
+
+    @Override
+    protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
+        try {
+            if (!req.getMethod().equals("GET")) {
+                throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
+                        "a stream of changes as text/event-stream");
+            }
+            String provider = parameter(req, "provider");
+            String service = parameter(req, "service");
+            checkQuery(req);
+            if (provider != null && model.provider(provider).isEmpty()) {
+                throw HttpError.notFound("no provider '" + provider + "'; providers: "
+                        + model.providers().stream().map(ProviderSnapshot::id).toList());
+            }
+            open(req, resp, provider, service);
+        } catch (HttpError e) {
+            Replies.error(resp, e);
+        }
+    }
+
+    private void open(HttpServletRequest req, HttpServletResponse resp, String provider, String service)
+            throws IOException {
+        resp.setStatus(200);
+        resp.setContentType("text/event-stream");
+        resp.setCharacterEncoding("UTF-8");
+        resp.setHeader("Cache-Control", "no-store");
+        AsyncContext async = req.startAsync();
+        async.setTimeout(0); // a stream has no end of its own; heartbeats find the clients that left
+        String filter = "provider=" + (provider == null ? "*" : provider) + ", service="
+                + (service == null ? "*" : service);
+        String who = req.getRemoteAddr() + ":" + req.getRemotePort() + " (" + filter + ")";
+        SseClient client = new SseClient(async, writer, capacity, who, log, clients::remove);
+        clients.add(client);
+        client.start("subscribed to " + filter, listener -> model.subscribe(provider, service, listener));
+        log.debug("SSE client " + who + " subscribed");
+    }
+
+    private static String parameter(HttpServletRequest req, String name) {
+        String[] values = req.getParameterValues(name);
+        if (values == null) {
+            return null;
+        }
+        if (values.length > 1) {
+            throw HttpError.badRequest("query parameter '" + name + "' given " + values.length
+                    + " times; give it once (or leave it out for any " + name + ")");
+        }
+        return values[0].isBlank() ? null : values[0].strip();
+    }
+
+    private static void checkQuery(HttpServletRequest req) {
+        for (Enumeration<String> names = req.getParameterNames(); names.hasMoreElements();) {
+            String name = names.nextElement();
+            if (!PARAMETERS.contains(name)) {
+                throw HttpError.badRequest("unknown query parameter '" + name + "'; " + req.getRequestURI()
+                        + " takes " + PARAMETERS + ", e.g. ?provider=robot1&service=position");
+            }
+        }
+    }
+}
