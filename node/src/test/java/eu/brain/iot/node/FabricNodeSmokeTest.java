@@ -3,6 +3,12 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -12,12 +18,13 @@ import org.junit.jupiter.api.io.TempDir;
 
 /**
  * Launches the exported node as the README does and uses it through its Gogo shell: the ready line, the bus's
- * commands, the framework's and SCR's commands, a configuration file and a bundle picked up from the config
- * folder, and the check mode's exit code.
+ * commands, the framework's and SCR's commands, the edge's commands and its REST API on loopback, a configuration
+ * file and a bundle picked up from the config folder, and the check mode's exit code.
  */
 class FabricNodeSmokeTest {
 
     private static final String READY = "fabric node ready in ";
+    private static final String ALL_ACTIVE = "fabric node: all ";
 
     @TempDir
     Path configDir;
@@ -27,12 +34,16 @@ class FabricNodeSmokeTest {
         Files.writeString(configDir.resolve("eu.brain.iot.eventing.cfg"), "queue.capacity=1234\n");
         TestBundles.write(configDir.resolve("extra.jar"), "test.extra", "Bundle-Name",
                 "Extra bundle dropped in the config folder");
-        try (NodeProcess node = NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir)) {
+        int httpPort = freePort();
+        try (NodeProcess node = NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir,
+                "-Dorg.osgi.service.http.port=" + httpPort)) {
             String started = node.awaitOutput(READY);
             assertThat(started).doesNotContain("WITH PROBLEMS").doesNotContain("Exception");
-            // the Gogo shell starts after the ready line, so that its prompt is the last thing on the console
+            // then the edge and Felix HTTP start; the Gogo shell comes after both lines, so its prompt is last
             String prompted = node.awaitOutput("g! ");
-            assertThat(prompted.indexOf("g! ")).isGreaterThan(prompted.indexOf(READY));
+            assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms");
+            assertThat(prompted.indexOf("g! ")).isGreaterThan(prompted.indexOf(ALL_ACTIVE))
+                    .isGreaterThan(prompted.indexOf(READY));
 
             node.type("bus:behaviours");
             node.awaitOutput("QUEUED");
@@ -46,6 +57,21 @@ class FabricNodeSmokeTest {
             node.type("scr:list");
             assertThat(node.awaitOutput("EventBusComponent")).containsPattern(
                     "EventBusComponent in bundle \\d+ \\([^)]*\\) enabled, 1 instance\\.\\s+Id: \\d+, State:ACTIVE");
+
+            // the edge: its bundle, its Gogo commands, and its REST API on 127.0.0.1 (no fleet is running here:
+            // the edge keeps trying, and its model is empty meanwhile)
+            node.type("lb");
+            assertThat(node.awaitOutput("BRAIN-IoT fabric: edge")).containsPattern(
+                    "\\|Active +\\| +\\d+\\|BRAIN-IoT fabric: edge");
+            node.type("edge:robots");
+            node.awaitOutput("HEADING");
+            node.type("edge:stats");
+            node.awaitOutput("polls sent");
+            HttpResponse<String> providers = HttpClient.newHttpClient().send(HttpRequest.newBuilder(
+                    URI.create("http://127.0.0.1:" + httpPort + "/sensinact/providers")).build(),
+                    HttpResponse.BodyHandlers.ofString());
+            assertThat(providers.statusCode()).isEqualTo(200);
+            assertThat(providers.body()).startsWith("[");
 
             // node/config's role: Config Admin gets the file's values through File Install
             await("the bus configured from " + configDir).atMost(NodeProcess.DEADLINE)
@@ -67,12 +93,21 @@ class FabricNodeSmokeTest {
         }
     }
 
+    /** A port free now, for the node's HTTP server, so that the test does not clash with a node already running. */
+    private static int freePort() throws Exception {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return socket.getLocalPort();
+        }
+    }
+
     @Test
     void checkModePrintsTheStartupTimeAndExitsWithZero() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
-                "-Dfelix.fileinstall.dir=" + configDir)) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
             assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isZero();
-            assertThat(node.output()).containsPattern(READY + "\\d+ ms \\(JVM start to event bus up, \\d+ bundles\\)")
+            assertThat(node.output())
+                    .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up, \\d+ bundles installed\\)")
+                    .containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms")
                     .as("no shell in check mode").doesNotContain("Gogo").doesNotContain("Exception");
         }
     }

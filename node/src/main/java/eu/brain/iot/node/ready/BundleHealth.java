@@ -20,9 +20,15 @@ final class BundleHealth {
      * first class load. Bundles above {@code maxStartLevel} are started later on purpose and are not looked at.
      */
     static List<String> problems(Bundle[] bundles, int maxStartLevel) {
+        return problems(bundles, 0, maxStartLevel);
+    }
+
+    /** The same, for the bundles of start levels {@code minStartLevel} to {@code maxStartLevel} only. */
+    static List<String> problems(Bundle[] bundles, int minStartLevel, int maxStartLevel) {
         List<String> problems = new ArrayList<>();
         for (Bundle bundle : bundles) {
-            if (startLevel(bundle) > maxStartLevel) {
+            int level = startLevel(bundle);
+            if (level < minStartLevel || level > maxStartLevel) {
                 continue;
             }
             int state = bundle.getState();

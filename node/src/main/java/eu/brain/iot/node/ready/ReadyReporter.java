@@ -25,24 +25,25 @@ import org.osgi.service.component.annotations.ReferencePolicy;
 import eu.brain.iot.eventing.api.EventBus;
 
 /**
- * Prints the node's one "ready" line, with the time since the JVM started, as soon as the event bus is registered
- * and the launcher has started every bundle; names instead the bundles that are not active. Then it raises the
- * framework's start level, which starts what waits for the node to be ready: the Gogo shell, whose prompt thus
- * always follows this line, and bundles installed later, at the initial bundle start level.
+ * Prints the node's "ready" line, with the time since the JVM started, as soon as the event bus is registered
+ * and the launcher has started every bundle of the first start level (the node's core); names instead the bundles
+ * that are not active. Then it raises the framework's start level, which starts what waits for the core: the
+ * edge with its HTTP server, then the Gogo shell, whose prompt thus always comes last, and bundles installed
+ * later, at the initial bundle start level. Once every level but the shell's is up it prints a second line,
+ * "all bundles active", with its own time, or the bundles that did not start.
  * <p>
  * The node's bndrun starts the framework at start level 1, so the launch is complete when bnd's launcher sets
  * {@code launcher.ready=true} on its service (it does so after starting every run bundle of that level), or,
- * under a launcher that starts the bundles before the framework, on {@link FrameworkEvent#STARTED}. Only bundles
- * up to this bundle's start level are checked. The bus reference is dynamic so that a bus that Config Admin
- * restarts at startup neither delays nor repeats the line.
+ * under a launcher that starts the bundles before the framework, on {@link FrameworkEvent#STARTED}. The bus
+ * reference is dynamic so that a bus that Config Admin restarts at startup neither delays nor repeats the line.
  * <p>
- * With the framework property {@value #EXIT_WHEN_READY}{@code =true} the node stops right after the line, without
- * starting its shell, and the JVM exits with 0 when it was ready, 1 when a bundle is not active: a check for
- * scripts and CI. It hands the exit code to bnd's launcher as a {@code main.thread} {@link Callable}, which the
- * launcher runs, then stops the framework and exits with its result.
+ * With the framework property {@value #EXIT_WHEN_READY}{@code =true} the node goes on to start every level below
+ * the shell's, prints both lines, then stops, and the JVM exits with 0 when both found every bundle active, 1
+ * otherwise: a check for scripts and CI. It hands the exit code to bnd's launcher as a {@code main.thread}
+ * {@link Callable}, which the launcher runs, then stops the framework and exits with its result.
  * <p>
- * Ownership: {@link #buses}, {@link #launched} and {@link #reported} are guarded by {@code this}; the framework
- * calls in from its own threads.
+ * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
+ * {@link #lastLevel} are guarded by {@code this}; the framework calls in from its own threads.
  */
 @Component
 public final class ReadyReporter {
@@ -51,6 +52,8 @@ public final class ReadyReporter {
     public static final String EXIT_WHEN_READY = "fabric.node.exitWhenReady";
 
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
+    /** The shell reads the console: it starts last, and a check run stops before it. */
+    private static final String SHELL = "org.apache.felix.gogo.shell";
 
     private final BundleContext context;
     private final long jvmStartMillis = ManagementFactory.getRuntimeMXBean().getStartTime();
@@ -62,12 +65,19 @@ public final class ReadyReporter {
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
+        } else if (event.getType() == FrameworkEvent.STARTLEVEL_CHANGED) {
+            levelReached();
         }
     };
 
     private int buses;
     private boolean launched;
     private boolean reported;
+    private boolean coreHealthy;
+    /** The level after which "all bundles active" is said; 0 until the ready line is out, -1 once said. */
+    private int fullLevel;
+    /** The level the node ends at: the shell's (or the initial bundle start level), not in a check. */
+    private int lastLevel;
 
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
@@ -117,29 +127,73 @@ public final class ReadyReporter {
         Bundle[] bundles = context.getBundles();
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles); "
-                    + "try bus:behaviours, bus:stats, lb, scr:list; 'stop 0' quits%n", sinceJvmStart, bundles.length);
+            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles installed); "
+                    + "try bus:behaviours, bus:stats, edge:robots, lb, scr:list; 'stop 0' quits%n", sinceJvmStart,
+                    bundles.length);
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
         }
-        if (Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY))) {
-            exitWith(problems.isEmpty() ? 0 : 1);
+        boolean check = Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY));
+        int highest = 0;
+        int shell = 0;
+        for (Bundle bundle : bundles) {
+            int level = BundleHealth.startLevel(bundle);
+            highest = Math.max(highest, level);
+            if (SHELL.equals(bundle.getSymbolicName())) {
+                shell = level;
+            }
+        }
+        // Everything of the node's own starts below the shell; at the shell's level also the bundles dropped in
+        // the config folder (File Install), which are the user's, not the node's.
+        int full = shell > 1 ? shell - 1 : highest;
+        FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
+                .adapt(FrameworkStartLevel.class);
+        synchronized (this) {
+            coreHealthy = problems.isEmpty();
+            fullLevel = full;
+            lastLevel = check ? full : Math.max(highest, framework.getInitialBundleStartLevel());
+        }
+        if (full > framework.getStartLevel()) {
+            framework.setStartLevel(full);
         } else {
-            startTheRest(bundles);
+            levelReached();
         }
     }
 
-    /** Raises the framework to the highest start level in use, and at least to the one new bundles get. */
-    private void startTheRest(Bundle[] bundles) {
+    /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
+    private void levelReached() {
         FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
                 .adapt(FrameworkStartLevel.class);
-        int level = framework.getInitialBundleStartLevel();
-        for (Bundle bundle : bundles) {
-            level = Math.max(level, BundleHealth.startLevel(bundle));
+        int level;
+        int last;
+        boolean core;
+        synchronized (this) {
+            if (fullLevel <= 0 || framework.getStartLevel() < fullLevel) {
+                return;
+            }
+            level = fullLevel;
+            last = lastLevel;
+            fullLevel = -1;
+            core = coreHealthy;
         }
-        if (level > framework.getStartLevel()) {
-            framework.setStartLevel(level);
+        long sinceJvmStart = System.currentTimeMillis() - jvmStartMillis;
+        Bundle[] bundles = context.getBundles();
+        // The levels above the core's (the core was looked at for the ready line) up to the shell's, at which
+        // File Install also starts the bundles dropped in the config folder.
+        List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()) + 1,
+                level);
+        if (problems.isEmpty()) {
+            System.out.printf("fabric node: all %d bundles active in %d ms (start levels 1 to %d: the core, then "
+                    + "the edge and its REST API)%n", bundles.length, sinceJvmStart, level);
+        } else {
+            System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
+                    String.join("; ", problems));
+        }
+        if (Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY))) {
+            exitWith(core && problems.isEmpty() ? 0 : 1);
+        } else if (last > framework.getStartLevel()) {
+            framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
     }
 
