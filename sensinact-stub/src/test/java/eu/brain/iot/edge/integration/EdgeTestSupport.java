@@ -108,11 +108,15 @@ final class EdgeTestSupport implements AutoCloseable {
     /** Both REST servlets are in Felix HTTP's runtime, and their services carry (or lack) these properties. */
     private void awaitServlets(Map<String, Object> properties, boolean carried) {
         await("the edge's REST servlets " + (carried ? "with " : "without ") + properties).atMost(DEADLINE)
-                .until(() -> {
+                .untilAsserted(() -> {
                     List<ServiceReference<?>> servlets = registeredServlets(context);
-                    return servlets.size() == SERVLETS.size() && servlets.stream().allMatch(ref -> properties
-                            .entrySet().stream().allMatch(p -> carried ? p.getValue().equals(ref.getProperty(p.getKey()))
-                                    : ref.getProperty(p.getKey()) == null));
+                    assertThat(servlets).hasSameSizeAs(SERVLETS).allSatisfy(ref -> properties.forEach((k, v) -> {
+                        if (carried) {
+                            assertThat(ref.getProperty(k)).as(k + " of " + ref).isEqualTo(v);
+                        } else {
+                            assertThat(ref.getProperty(k)).as(k + " of " + ref).isNull();
+                        }
+                    }));
                 });
     }
 
