@@ -9,7 +9,8 @@ import eu.brain.iot.benchmarks.spi.BusDriver;
 
 /**
  * The event bus benchmark (issue 2, section 6): our bus, Felix EventAdmin (default and Timeout=0) and Aries
- * typedevent, each in its own embedded Felix framework, one after the other in this process. Run it with
+ * typedevent, each in its own embedded Felix framework in a JVM of its own ({@link ForkedRun}), one after the
+ * other. Run it with
  * {@code java -jar benchmarks/target/benchmarks.jar}; see the module's README.
  */
 public final class BusBenchmark {
@@ -32,17 +33,32 @@ public final class BusBenchmark {
             System.exit(2);
             return;
         }
+        if (settings.resultFile() != null) {
+            // a forked JVM: one contender, its result to the launching JVM
+            ContenderResult result = run(settings.contenders().get(0), settings);
+            ForkedRun.write(result, settings.resultFile());
+            System.exit(result.error() == null ? 0 : 1);
+            return;
+        }
         Report report = new Report(System.out);
         report.environment(settings);
         List<ContenderResult> results = new ArrayList<>();
         for (Contender contender : settings.contenders()) {
-            results.add(run(contender, settings));
+            results.add(settings.fork() ? forked(contender, args) : run(contender, settings));
         }
         report.table(results);
         report.load("at the end");
         if (results.stream().anyMatch(r -> r.error() != null)) {
             System.exit(1);
         }
+    }
+
+    private static ContenderResult forked(Contender contender, String[] args) {
+        ContenderResult result = ForkedRun.run(contender, args);
+        if (result.error() != null) {
+            System.err.println("   FAILED: " + result.error());
+        }
+        return result;
     }
 
     private static ContenderResult run(Contender contender, Settings settings) {

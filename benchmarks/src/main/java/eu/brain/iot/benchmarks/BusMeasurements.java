@@ -1,5 +1,6 @@
 package eu.brain.iot.benchmarks;
 
+import java.io.Serializable;
 import java.util.Arrays;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
@@ -34,7 +35,7 @@ final class BusMeasurements {
      *
      * @param cost CPU time and context switches of all measured rounds together
      */
-    record Throughput(int events, double[] rounds, ProcessCost cost) {
+    record Throughput(int events, double[] rounds, ProcessCost cost) implements Serializable {
         double cpuMicrosPerEvent() {
             return cost.cpuNanos() / 1_000.0 / ((double) events * rounds.length);
         }
@@ -60,7 +61,7 @@ final class BusMeasurements {
     }
 
     /** Pooled latency samples of every consumer, sorted, in nanoseconds. */
-    record Latency(long[] sortedNanos, double achievedRate) {
+    record Latency(long[] sortedNanos, double achievedRate) implements Serializable {
         double meanMicros() {
             return Arrays.stream(sortedNanos).average().orElse(Double.NaN) / 1_000.0;
         }

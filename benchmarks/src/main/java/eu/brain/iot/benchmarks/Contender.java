@@ -1,5 +1,6 @@
 package eu.brain.iot.benchmarks;
 
+import java.io.Serializable;
 import java.util.List;
 import java.util.Map;
 
@@ -10,12 +11,13 @@ import java.util.Map;
  * @param key the command-line name
  * @param label the name in the result table
  */
-record Contender(String key, String label, List<String> bundles, Map<String, String> frameworkProperties) {
+record Contender(String key, String label, List<String> bundles, Map<String, String> frameworkProperties)
+        implements Serializable {
 
     private static final List<String> OSGI_UTIL = List.of("org.osgi.util.function.jar", "org.osgi.util.promise.jar",
             "org.osgi.util.converter.jar");
 
-    /** Every contender, peers first: our bus runs last, so shared JIT profiles never favour it. */
+    /** Every contender, peers first (by default each runs in a JVM of its own, so the order does not matter). */
     static List<Contender> all() {
         List<String> eventAdmin = List.of("org.apache.felix.eventadmin.jar", "benchmarks-driver-eventadmin.jar");
         return List.of(

@@ -1,6 +1,7 @@
 package eu.brain.iot.benchmarks;
 
 import java.io.IOException;
+import java.io.Serializable;
 import java.lang.management.ManagementFactory;
 import java.nio.file.DirectoryStream;
 import java.nio.file.Files;
@@ -11,7 +12,7 @@ import java.nio.file.Path;
  * (CPU burnt versus threads put to sleep and woken). Context switches come from Linux's per-thread
  * {@code /proc/self/task/N/status}; elsewhere they read as unknown (-1).
  */
-record ProcessCost(long cpuNanos, long voluntarySwitches, long involuntarySwitches) {
+record ProcessCost(long cpuNanos, long voluntarySwitches, long involuntarySwitches) implements Serializable {
 
     private static final Path TASKS = Path.of("/proc/self/task");
 

@@ -16,9 +16,11 @@ import java.util.List;
  * @param latencyRate events per second in the latency phase
  * @param latencyWarmupSeconds paced seconds run and discarded before the latency is recorded
  * @param latencySeconds paced seconds recorded
+ * @param fork whether each contender runs in a JVM of its own (see {@link ForkedRun})
+ * @param resultFile where a forked JVM writes its one result, {@code null} in the launching JVM
  */
 record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, int rounds, long roundMillis,
-        int latencyRate, int latencyWarmupSeconds, int latencySeconds) {
+        int latencyRate, int latencyWarmupSeconds, int latencySeconds, boolean fork, Path resultFile) {
 
     static final String USAGE = """
             usage: java -jar benchmarks/target/benchmarks.jar [options]
@@ -30,6 +32,9 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
               --latency-warmup S     paced seconds discarded before recording (default 2)
               --latency-seconds S    paced seconds recorded (default 5)
               --bundles DIR          directory of the bundle jars (default: bundles/ next to benchmarks.jar)
+              --fork yes|no          each contender in a fresh JVM with this JVM's options (default yes);
+                                     no: all in this JVM, where a contender inherits the JIT profiles of the
+                                     ones before it
             """;
 
     static Settings parse(String[] args, Path defaultBundleDir) {
@@ -41,6 +46,8 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
         int rate = 2000;
         int latencyWarmup = 2;
         int latencySeconds = 5;
+        boolean fork = true;
+        Path resultFile = null;
         for (int i = 0; i < args.length; i++) {
             String option = args[i];
             if (i + 1 >= args.length) {
@@ -56,10 +63,21 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
                 case "--latency-rate" -> rate = positive(option, value, 1);
                 case "--latency-warmup" -> latencyWarmup = positive(option, value, 0);
                 case "--latency-seconds" -> latencySeconds = positive(option, value, 1);
+                case "--fork" -> fork = yesNo(option, value);
+                case ForkedRun.RESULT_OPTION -> resultFile = Path.of(value);
                 default -> throw new BenchmarkException("unknown option " + option + "\n" + usage());
             }
         }
-        return new Settings(contenders, bundleDir, warmup, rounds, roundMillis, rate, latencyWarmup, latencySeconds);
+        return new Settings(contenders, bundleDir, warmup, rounds, roundMillis, rate, latencyWarmup, latencySeconds,
+                fork && resultFile == null, resultFile);
+    }
+
+    private static boolean yesNo(String option, String value) {
+        return switch (value) {
+            case "yes" -> true;
+            case "no" -> false;
+            default -> throw new BenchmarkException(option + " takes yes or no, got '" + value + "'");
+        };
     }
 
     private static List<Contender> contenders(String value) {
@@ -100,6 +118,7 @@ record Settings(List<Contender> contenders, Path bundleDir, int warmupRounds, in
         return "warm-up rounds " + warmupRounds + ", measured rounds " + rounds + " of ~" + roundMillis
                 + " ms; latency at " + latencyRate + " events/s: " + latencyWarmupSeconds + " s discarded, "
                 + latencySeconds + " s recorded; contenders " + Arrays.toString(
-                        contenders.stream().map(Contender::key).toArray());
+                        contenders.stream().map(Contender::key).toArray())
+                + (fork ? ", each in a JVM of its own" : ", all in this JVM");
     }
 }
