@@ -101,6 +101,19 @@ class FabricNodeSmokeTest {
     }
 
     @Test
+    void withoutAShellTheReadyLineSaysHowToStopTheNode() throws Exception {
+        try (NodeProcess node = NodeProcess.start("-Dgosh.args=--nointeractive",
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+            String started = node.awaitOutput(ALL_ACTIVE);
+            assertThat(started).contains("no shell (gosh.args=--nointeractive): stop it with Ctrl-C or kill "
+                    + node.pid()).doesNotContain("'stop 0'").doesNotContain("WITH PROBLEMS");
+            node.terminate();
+            assertThat(node.awaitExit()).as("exit code after SIGTERM; output:%n%s", node.output()).isEqualTo(143);
+            assertThat(node.output()).doesNotContain("Gogo").doesNotContain("Exception");
+        }
+    }
+
+    @Test
     void checkModePrintsTheStartupTimeAndExitsWithZero() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
                 "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {

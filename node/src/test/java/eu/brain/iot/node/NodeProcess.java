@@ -82,6 +82,16 @@ final class NodeProcess implements AutoCloseable {
         return process.exitValue();
     }
 
+    /** The node's JVM's process id. */
+    long pid() {
+        return process.pid();
+    }
+
+    /** Sends the node's JVM SIGTERM, as {@code kill <pid>} does. */
+    void terminate() {
+        process.destroy();
+    }
+
     @Override
     public void close() {
         process.destroyForcibly();

@@ -54,6 +54,9 @@ public final class ReadyReporter {
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
     private static final String SHELL = "org.apache.felix.gogo.shell";
+    /** The Gogo shell's arguments (a framework property); with {@value #NO_INTERACTIVE} it reads no console. */
+    private static final String SHELL_ARGS = "gosh.args";
+    private static final String NO_INTERACTIVE = "--nointeractive";
 
     private final BundleContext context;
     private final long jvmStartMillis = ManagementFactory.getRuntimeMXBean().getStartTime();
@@ -127,9 +130,9 @@ public final class ReadyReporter {
         Bundle[] bundles = context.getBundles();
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles installed); "
-                    + "try bus:behaviours, bus:stats, edge:robots, lb, scr:list; 'stop 0' quits%n", sinceJvmStart,
-                    bundles.length);
+            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles installed); %s%n",
+                    sinceJvmStart, bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                            context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
@@ -195,6 +198,21 @@ public final class ReadyReporter {
         } else if (last > framework.getStartLevel()) {
             framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
+    }
+
+    /**
+     * The end of the ready line: what to type, and how to stop the node. Without an interactive shell (the Gogo
+     * shell's {@code --nointeractive}, as {@code ./fabric-node --no-shell} sets) there is nothing to type into:
+     * the node runs until its process is stopped.
+     */
+    static String howToUse(boolean check, String shellArgs, long pid) {
+        if (check) {
+            return "check run: stops once every bundle is active";
+        }
+        if (shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE)) {
+            return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
+        }
+        return "try bus:behaviours, bus:stats, edge:robots, lb, scr:list; 'stop 0' quits";
     }
 
     private void exitWith(int status) {
