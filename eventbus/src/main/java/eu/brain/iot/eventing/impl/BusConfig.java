@@ -15,7 +15,7 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     long overflow_timeout_ms() default 5_000;
 
     @AttributeDefinition(description = "Delivery workers that take turns on the behaviours' queues; 0 means one "
-            + "per available processor. More workers than cores only adds wake-ups.")
+            + "per available processor, at least 2. More workers than cores only adds wake-ups.")
     int delivery_workers() default 0;
 
     @AttributeDefinition(description = "How long an idle delivery worker keeps yielding before it sleeps "

@@ -56,13 +56,16 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
     public EventBusComponent(BundleContext context, BusConfig config,
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
+        DeliveryPool.Settings delivery = deliverySettings(config, Runtime.getRuntime().availableProcessors());
         this.bus = new AsyncEventBus(context.getProperty(Constants.FRAMEWORK_UUID), config.queue_capacity(),
-                config.overflow_timeout_ms(), deliverySettings(config), log);
+                config.overflow_timeout_ms(), delivery, log);
     }
 
-    static DeliveryPool.Settings deliverySettings(BusConfig config) {
+    static DeliveryPool.Settings deliverySettings(BusConfig config, int processors) {
+        // At least 2 by default, also on one core: then a single behaviour blocked in notify() never holds up the
+        // others, not even for the stall threshold the watchdog needs to notice it.
         int workers = config.delivery_workers() > 0 ? config.delivery_workers()
-                : Runtime.getRuntime().availableProcessors();
+                : Math.max(2, processors);
         return new DeliveryPool.Settings(workers, TimeUnit.MICROSECONDS.toNanos(config.idle_spin_us()),
                 TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_threshold_ms())), WORKER_KEEP_ALIVE_NANOS);
     }
