@@ -4,13 +4,12 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.awaitility.Awaitility.await;
 
-import java.time.Duration;
 import java.util.List;
 import java.util.Map;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -18,36 +17,24 @@ import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.api.GoToCommand;
 import eu.brain.iot.edge.api.OpenDoorCommand;
 import eu.brain.iot.edge.model.api.UnknownResourceException;
-import eu.brain.iot.robotsim.RobotSim;
-import eu.brain.iot.robotsim.SimConfig;
 
 /** A command that cannot be done is rejected with the reason, published like any outcome; nothing else changes. */
 class CommandRejectionTest {
 
-    private RobotSim sim;
-    private Edge edge;
-    private final RecordingSink sink = new RecordingSink();
+    @RegisterExtension
+    final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of(), List.of(), 100, 1000, 8, 1, 2, 400));
 
     @BeforeEach
-    void start() throws Exception {
-        sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
-        edge = new Edge(FleetSettings.of(sim.baseUri().toString(), List.of(), List.of(), 100, 1000, 8, 1, 2, 400),
-                sink, EdgeLog.stderr());
-        await().atMost(Duration.ofSeconds(10)).until(() -> edge.providers().size() == 4);
-    }
-
-    @AfterEach
-    void stop() {
-        edge.close();
-        sim.close();
+    void allPolled() {
+        fleet.awaitAllOk(4);
     }
 
     private CommandOutcome run(EdgeCommand command, String device) {
         command.deviceId = device;
-        command.commandId = "c-" + sink.events.size();
-        CommandOutcome outcome = edge.execute(command).join();
+        command.commandId = "c-" + fleet.sink.events.size();
+        CommandOutcome outcome = fleet.edge.execute(command).join();
         assertThat(outcome.commandId).isEqualTo(command.commandId);
-        assertThat(sink.of(CommandOutcome.class)).contains(outcome);
+        assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome);
         return outcome;
     }
 
@@ -60,7 +47,7 @@ class CommandRejectionTest {
         assertThat(outcome.accepted).isFalse();
         assertThat(outcome.status).isEqualTo(422);
         assertThat(outcome.reason).isEqualTo("goal (0,0) is a wall");
-        assertThat(sim.robot("robot1").mission()).isNull();
+        assertThat(fleet.sim.robot("robot1").mission()).isNull();
     }
 
     @Test
@@ -79,7 +66,7 @@ class CommandRejectionTest {
 
     @Test
     void anUnreachableDeviceRejectsWithTheConnectionProblem() {
-        SimAdmin.fault(sim, "robot3", "{\"offline\":true}");
+        SimAdmin.fault(fleet.sim, "robot3", "{\"offline\":true}");
         CommandOutcome outcome = run(new GoToCommand(), "robot3");
         assertThat(outcome.accepted).isFalse();
         assertThat(outcome.status).isEqualTo(503);
@@ -88,17 +75,17 @@ class CommandRejectionTest {
 
     @Test
     void actionsCheckTheirParameters() {
-        assertThatThrownBy(() -> edge.act("robot1", "control", "goTo", Map.of("x", "9", "y", 7)))
+        assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "goTo", Map.of("x", "9", "y", 7)))
                 .isInstanceOf(IllegalArgumentException.class)
                 .hasMessage("parameter 'x' must be a whole number, found 9 (a string)");
-        assertThatThrownBy(() -> edge.act("robot1", "control", "goTo", Map.of("x", 9)))
+        assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "goTo", Map.of("x", 9)))
                 .hasMessage("parameter 'y' is missing");
-        assertThatThrownBy(() -> edge.act("robot1", "control", "fly", Map.of()))
+        assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "fly", Map.of()))
                 .isInstanceOf(UnknownResourceException.class).hasMessageContaining("robot1 has no action 'fly'");
-        assertThatThrownBy(() -> edge.act("robot7", "control", "pick", Map.of()))
+        assertThatThrownBy(() -> fleet.edge.act("robot7", "control", "pick", Map.of()))
                 .isInstanceOf(UnknownResourceException.class).hasMessageContaining("no provider 'robot7'");
-        CommandOutcome open = edge.act("door1", "control", "open", Map.of()).toCompletableFuture().join();
+        CommandOutcome open = fleet.edge.act("door1", "control", "open", Map.of()).toCompletableFuture().join();
         assertThat(open.accepted).isTrue();
-        assertThat(sim.door("door1").state()).isEqualTo("opening");
+        assertThat(fleet.sim.door("door1").state()).isEqualTo("opening");
     }
 }

@@ -6,17 +6,15 @@ import static org.awaitility.Awaitility.await;
 import java.time.Duration;
 import java.util.List;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.CsvSource;
 
 import eu.brain.iot.edge.api.DeviceRecovered;
 import eu.brain.iot.edge.api.DeviceUnreachable;
 import eu.brain.iot.edge.model.api.ResourceStatus;
-import eu.brain.iot.robotsim.RobotSim;
-import eu.brain.iot.robotsim.SimConfig;
 
 /**
  * Every fault robot-sim can inject, on one robot: the robot is marked and reported once, the other robots keep
@@ -26,53 +24,38 @@ class FaultRecoveryTest {
 
     private static final Duration DEADLINE = Duration.ofSeconds(15);
 
-    private RobotSim sim;
-    private Edge edge;
-    private final RecordingSink sink = new RecordingSink();
+    // 100 ms period, 300 ms timeout, unreachable after 2 failures, backoff up to 400 ms
+    @RegisterExtension
+    final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of(), List.of(), 100, 300, 8, 1, 2, 400));
 
     @BeforeEach
-    void start() throws Exception {
-        sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
-        // 100 ms period, 300 ms timeout, unreachable after 2 failures, backoff up to 400 ms
-        edge = new Edge(FleetSettings.of(sim.baseUri().toString(), List.of(), List.of(), 100, 300, 8, 1, 2, 400),
-                sink, EdgeLog.stderr());
-        await().atMost(DEADLINE).until(() -> edge.providers().size() == 4
-                && edge.providers().stream().allMatch(p -> p.status() == ResourceStatus.OK));
-    }
-
-    @AfterEach
-    void stop() {
-        edge.close();
-        sim.close();
+    void allPolled() {
+        fleet.awaitAllOk(4);
     }
 
     @Test
     void aPollThatNeverLeftTheEdgeDoesNotMakeAHealthyDeviceUnreachable() {
-        edge.close();
-        sink.events.clear();
         // one connection for the whole fleet, held 300 ms (the timeout) by every poll of two robots that do not
         // answer: the other devices' polls wait for it, behind both, and time out before they are sent
-        edge = new Edge(FleetSettings.of(sim.baseUri().toString(), List.of(), List.of(), 100, 300, 1, 1, 1, 400),
-                sink, EdgeLog.stderr());
-        await().atMost(DEADLINE).until(() -> edge.providers().size() == 4
-                && edge.providers().stream().allMatch(p -> p.status() == ResourceStatus.OK));
+        fleet.restart(url -> FleetSettings.of(url, List.of(), List.of(), 100, 300, 1, 1, 1, 400));
+        fleet.awaitAllOk(4);
         // a healthy device goes stale only when its poll could not be sent
         java.util.Set<String> staleHealthy = java.util.concurrent.ConcurrentHashMap.newKeySet();
-        edge.subscribe(null, null, v -> {
+        fleet.edge.subscribe(null, null, v -> {
             if (v.status() != ResourceStatus.OK && !v.provider().equals("robot2") && !v.provider().equals("robot3")) {
                 staleHealthy.add(v.provider() + " " + v.status());
             }
         });
-        SimAdmin.fault(sim, "robot2", "{\"latencyMs\":2000}");
-        SimAdmin.fault(sim, "robot3", "{\"latencyMs\":2000}");
+        SimAdmin.fault(fleet.sim, "robot2", "{\"latencyMs\":2000}");
+        SimAdmin.fault(fleet.sim, "robot3", "{\"latencyMs\":2000}");
 
         await().atMost(DEADLINE).until(() -> !staleHealthy.isEmpty());
         assertThat(staleHealthy).allSatisfy(s -> assertThat(s).endsWith(" STALE"));
-        await().atMost(DEADLINE).until(() -> sink.of(DeviceUnreachable.class).size() >= 2);
-        SimAdmin.clear(sim, "robot2");
-        SimAdmin.clear(sim, "robot3");
-        await().atMost(DEADLINE).until(() -> edge.providers().stream().allMatch(p -> p.status() == ResourceStatus.OK));
-        assertThat(sink.of(DeviceUnreachable.class)).extracting(e -> e.deviceId)
+        await().atMost(DEADLINE).until(() -> fleet.sink.of(DeviceUnreachable.class).size() >= 2);
+        SimAdmin.clear(fleet.sim, "robot2");
+        SimAdmin.clear(fleet.sim, "robot3");
+        fleet.awaitAllOk(4);
+        assertThat(fleet.sink.of(DeviceUnreachable.class)).extracting(e -> e.deviceId)
                 .containsExactlyInAnyOrder("robot2", "robot3");
     }
 
@@ -84,34 +67,34 @@ class FaultRecoveryTest {
             "dropped        | {\"dropRate\":1.0}     | closed the connection without answering",
             "offline        | {\"offline\":true}     | HTTP 503: robot robot2 is offline" })
     void aFaultyRobotIsReportedOnceAndRecoversWhileOthersKeepBeingPolled(String fault, String json, String reason) {
-        SimAdmin.fault(sim, "robot2", json);
+        SimAdmin.fault(fleet.sim, "robot2", json);
 
-        await().atMost(DEADLINE).until(() -> edge.provider("robot2").orElseThrow().status()
+        await().atMost(DEADLINE).until(() -> fleet.edge.provider("robot2").orElseThrow().status()
                 == ResourceStatus.UNREACHABLE);
-        assertThat(edge.provider("robot2").orElseThrow().reason()).contains(reason);
-        assertThat(edge.resource("robot2", "position", "x").orElseThrow().status())
+        assertThat(fleet.edge.provider("robot2").orElseThrow().reason()).contains(reason);
+        assertThat(fleet.edge.resource("robot2", "position", "x").orElseThrow().status())
                 .isEqualTo(ResourceStatus.UNREACHABLE);
-        List<DeviceUnreachable> reports = sink.of(DeviceUnreachable.class);
+        List<DeviceUnreachable> reports = fleet.sink.of(DeviceUnreachable.class);
         assertThat(reports).singleElement().satisfies(e -> {
             assertThat(e.deviceId).isEqualTo("robot2");
             assertThat(e.reason).contains(reason);
         });
 
         // the others are still polled and current while robot2 is down
-        long answeredBefore = edge.pollStats().answered();
-        await().atMost(DEADLINE).until(() -> edge.pollStats().answered() >= answeredBefore + 20);
-        assertThat(edge.provider("robot1").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
-        assertThat(edge.provider("robot3").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
+        long answeredBefore = fleet.edge.pollStats().answered();
+        await().atMost(DEADLINE).until(() -> fleet.edge.pollStats().answered() >= answeredBefore + 20);
+        assertThat(fleet.edge.provider("robot1").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
+        assertThat(fleet.edge.provider("robot3").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
 
         // still reported only once after many more failed polls (backoff keeps polling it)
-        long failedBefore = edge.pollStats().failed();
-        await().atMost(DEADLINE).until(() -> edge.pollStats().failed() >= failedBefore + 3);
-        assertThat(sink.of(DeviceUnreachable.class)).hasSize(1);
+        long failedBefore = fleet.edge.pollStats().failed();
+        await().atMost(DEADLINE).until(() -> fleet.edge.pollStats().failed() >= failedBefore + 3);
+        assertThat(fleet.sink.of(DeviceUnreachable.class)).hasSize(1);
 
-        SimAdmin.clear(sim, "robot2");
-        await().atMost(DEADLINE).until(() -> edge.provider("robot2").orElseThrow().status() == ResourceStatus.OK);
-        assertThat(sink.of(DeviceRecovered.class)).singleElement().satisfies(e -> assertThat(e.deviceId)
+        SimAdmin.clear(fleet.sim, "robot2");
+        await().atMost(DEADLINE).until(() -> fleet.edge.provider("robot2").orElseThrow().status() == ResourceStatus.OK);
+        assertThat(fleet.sink.of(DeviceRecovered.class)).singleElement().satisfies(e -> assertThat(e.deviceId)
                 .isEqualTo("robot2"));
-        assertThat(edge.resource("robot2", "position", "x").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
+        assertThat(fleet.edge.resource("robot2", "position", "x").orElseThrow().status()).isEqualTo(ResourceStatus.OK);
     }
 }

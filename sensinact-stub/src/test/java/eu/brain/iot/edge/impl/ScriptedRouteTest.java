@@ -8,9 +8,9 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Objects;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.extension.RegisterExtension;
 
 import eu.brain.iot.edge.api.CartLifted;
 import eu.brain.iot.edge.api.CartPlaced;
@@ -23,9 +23,6 @@ import eu.brain.iot.edge.api.OpenDoorCommand;
 import eu.brain.iot.edge.api.PickCartCommand;
 import eu.brain.iot.edge.api.PlaceCartCommand;
 import eu.brain.iot.edge.api.RobotPositionChanged;
-import eu.brain.iot.edge.model.api.ResourceStatus;
-import eu.brain.iot.robotsim.RobotSim;
-import eu.brain.iot.robotsim.SimConfig;
 import eu.brain.iot.robotsim.view.RobotView;
 
 /**
@@ -37,22 +34,13 @@ class ScriptedRouteTest {
 
     private static final Duration DEADLINE = Duration.ofSeconds(10);
 
-    private RobotSim sim;
-    private Edge edge;
-    private final RecordingSink sink = new RecordingSink();
+    @RegisterExtension
+    final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of("robot3"), List.of("door1"), 50, 1000,
+            8, 1, 3, 400));
 
     @BeforeEach
-    void start() throws Exception {
-        sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
-        edge = new Edge(FleetSettings.of(sim.baseUri().toString(), List.of("robot3"), List.of("door1"), 50, 1000,
-                8, 1, 3, 400), sink, EdgeLog.stderr());
-        await().atMost(DEADLINE).until(() -> edge.providers().stream().allMatch(p -> p.status() == ResourceStatus.OK));
-    }
-
-    @AfterEach
-    void stop() {
-        edge.close();
-        sim.close();
+    void allPolled() {
+        fleet.awaitAllOk(2);
     }
 
     @Test
@@ -65,53 +53,55 @@ class ScriptedRouteTest {
         missions.add(accept(command(new PlaceCartCommand(), "robot3")));
 
         List<String> route = new ArrayList<>();
-        RobotView start = sim.robot("robot3");
+        RobotView start = fleet.sim.robot("robot3");
         route.add(start.x() + "," + start.y());
         for (int step = 0; step < 80 && !finished(missions.get(3)); step++) {
-            sim.step(1);
-            RobotView now = sim.robot("robot3");
-            await().atMost(DEADLINE).until(() -> Objects.equals(edge.resource("robot3", "position", "x")
-                    .orElseThrow().value(), now.x()) && Objects.equals(edge.resource("robot3", "position", "y")
-                    .orElseThrow().value(), now.y()) && Objects.equals(edge.resource("robot3", "cart", "cart")
+            fleet.sim.step(1);
+            RobotView now = fleet.sim.robot("robot3");
+            await().atMost(DEADLINE).until(() -> Objects.equals(fleet.edge.resource("robot3", "position", "x")
+                    .orElseThrow().value(), now.x()) && Objects.equals(fleet.edge.resource("robot3", "position", "y")
+                    .orElseThrow().value(), now.y()) && Objects.equals(fleet.edge.resource("robot3", "cart", "cart")
                     .orElseThrow().value(), now.cart()));
             if (!route.get(route.size() - 1).equals(now.x() + "," + now.y())) {
                 route.add(now.x() + "," + now.y());
             }
         }
-        assertThat(finished(missions.get(3))).as("the errand ends within 80 steps: " + sim.robot("robot3") + " " + sim.door("door1")).isTrue();
+        assertThat(finished(missions.get(3))).as("the errand ends within 80 steps: " + fleet.sim.robot("robot3")
+                + " " + fleet.sim.door("door1")).isTrue();
 
-        List<String> announced = sink.of(RobotPositionChanged.class).stream().map(e -> e.x + "," + e.y).toList();
+        List<String> announced = fleet.sink.of(RobotPositionChanged.class).stream().map(e -> e.x + "," + e.y).toList();
         assertThat(announced).containsExactlyElementsOf(route);
         assertThat(route).contains("10,7", "13,2");
-        assertThat(sink.of(CartLifted.class)).singleElement().satisfies(e -> {
+        assertThat(fleet.sink.of(CartLifted.class)).singleElement().satisfies(e -> {
             assertThat(e.cartId).isEqualTo("cart2");
             assertThat(e.x + "," + e.y).isEqualTo("10,7");
         });
-        assertThat(sink.of(CartPlaced.class)).singleElement().satisfies(e -> {
+        assertThat(fleet.sink.of(CartPlaced.class)).singleElement().satisfies(e -> {
             assertThat(e.cartId).isEqualTo("cart2");
             assertThat(e.x + "," + e.y).isEqualTo("13,2");
         });
-        await().atMost(DEADLINE).until(() -> sink.of(MissionFinished.class).size() == 4);
-        assertThat(sink.of(MissionFinished.class)).extracting(e -> e.missionId).containsExactlyElementsOf(missions);
-        assertThat(sink.of(MissionFinished.class)).extracting(e -> e.missionType)
+        await().atMost(DEADLINE).until(() -> fleet.sink.of(MissionFinished.class).size() == 4);
+        assertThat(fleet.sink.of(MissionFinished.class)).extracting(e -> e.missionId)
+                .containsExactlyElementsOf(missions);
+        assertThat(fleet.sink.of(MissionFinished.class)).extracting(e -> e.missionType)
                 .containsExactly("goto", "pick", "goto", "place");
-        assertThat(sink.of(MissionFailed.class)).isEmpty();
+        assertThat(fleet.sink.of(MissionFailed.class)).isEmpty();
     }
 
     @Test
     void aMissionThatEndsBetweenTwoPollsIsStillAnnouncedFromTheRobotsHistory() {
         long first = accept(goTo(6, 2));
         long second = accept(goTo(6, 3));
-        long polled = edge.pollStats().answered();
-        await().atMost(DEADLINE).until(() -> edge.pollStats().answered() > polled + 2);
+        long polled = fleet.edge.pollStats().answered();
+        await().atMost(DEADLINE).until(() -> fleet.edge.pollStats().answered() > polled + 2);
         // stop the edge from seeing the first mission's end: both missions end within one batch of steps
-        sim.step(10);
-        await().atMost(DEADLINE).until(() -> sink.of(MissionFinished.class).size() == 2);
-        assertThat(sink.of(MissionFinished.class)).extracting(e -> e.missionId).containsExactly(first, second);
+        fleet.sim.step(10);
+        await().atMost(DEADLINE).until(() -> fleet.sink.of(MissionFinished.class).size() == 2);
+        assertThat(fleet.sink.of(MissionFinished.class)).extracting(e -> e.missionId).containsExactly(first, second);
     }
 
     private boolean finished(long mission) {
-        RobotView r = sim.robot("robot3");
+        RobotView r = fleet.sim.robot("robot3");
         return r.mission() != null && r.mission().id() == mission && r.mission().state().equals("finished");
     }
 
@@ -128,9 +118,9 @@ class ScriptedRouteTest {
     }
 
     private long accept(EdgeCommand command) {
-        CommandOutcome outcome = edge.execute(command).join();
+        CommandOutcome outcome = fleet.edge.execute(command).join();
         assertThat(outcome.accepted).as(outcome.reason).isTrue();
-        assertThat(sink.of(CommandOutcome.class)).contains(outcome);
+        assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome);
         return outcome.missionId == null ? -1 : outcome.missionId;
     }
 }
