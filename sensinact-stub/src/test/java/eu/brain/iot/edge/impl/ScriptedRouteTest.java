@@ -1,6 +1,7 @@
 package eu.brain.iot.edge.impl;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static eu.brain.iot.edge.integration.EdgeCommands.to;
 import static org.awaitility.Awaitility.await;
 
 import java.time.Duration;
@@ -23,6 +24,7 @@ import eu.brain.iot.edge.api.OpenDoorCommand;
 import eu.brain.iot.edge.api.PickCartCommand;
 import eu.brain.iot.edge.api.PlaceCartCommand;
 import eu.brain.iot.edge.api.RobotPositionChanged;
+import eu.brain.iot.edge.integration.EdgeCommands;
 import eu.brain.iot.robotsim.view.RobotView;
 
 /**
@@ -45,12 +47,12 @@ class ScriptedRouteTest {
 
     @Test
     void eventsTellTheRouteTheCartAndEveryMissionEnd() {
-        accept(command(new OpenDoorCommand(), "door1"));
+        accept(to(new OpenDoorCommand(), "door1"));
         List<Long> missions = new ArrayList<>();
         missions.add(accept(goTo(10, 7))); // cart2 stands there
-        missions.add(accept(command(new PickCartCommand(), "robot3")));
+        missions.add(accept(to(new PickCartCommand(), "robot3")));
         missions.add(accept(goTo(13, 2)));
-        missions.add(accept(command(new PlaceCartCommand(), "robot3")));
+        missions.add(accept(to(new PlaceCartCommand(), "robot3")));
 
         List<String> route = new ArrayList<>();
         RobotView start = fleet.sim.robot("robot3");
@@ -101,20 +103,11 @@ class ScriptedRouteTest {
     }
 
     private boolean finished(long mission) {
-        RobotView r = fleet.sim.robot("robot3");
-        return r.mission() != null && r.mission().id() == mission && r.mission().state().equals("finished");
+        return EdgeCommands.finished(fleet.sim.robot("robot3"), mission);
     }
 
     private static GoToCommand goTo(int x, int y) {
-        GoToCommand g = command(new GoToCommand(), "robot3");
-        g.x = x;
-        g.y = y;
-        return g;
-    }
-
-    private static <C extends EdgeCommand> C command(C command, String device) {
-        command.deviceId = device;
-        return command;
+        return EdgeCommands.goTo("robot3", x, y);
     }
 
     private long accept(EdgeCommand command) {

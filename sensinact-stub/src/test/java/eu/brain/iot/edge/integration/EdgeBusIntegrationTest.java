@@ -1,90 +1,36 @@
 package eu.brain.iot.edge.integration;
 
-import static org.assertj.core.api.Assertions.assertThat;
 import static eu.brain.iot.edge.integration.EdgeTestSupport.DEADLINE;
+import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.util.Hashtable;
+import java.time.Instant;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.CopyOnWriteArrayList;
 
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
-import org.osgi.framework.BundleContext;
-import org.osgi.framework.ServiceRegistration;
-import org.osgi.service.cm.ConfigurationAdmin;
-import org.osgi.test.common.annotation.InjectBundleContext;
-import org.osgi.test.common.annotation.InjectService;
+import org.osgi.framework.Constants;
 
 import eu.brain.iot.edge.api.CommandOutcome;
-import eu.brain.iot.edge.api.DeviceRecovered;
-import eu.brain.iot.edge.api.DeviceUnreachable;
 import eu.brain.iot.edge.api.DoorStateChanged;
 import eu.brain.iot.edge.api.GoToCommand;
 import eu.brain.iot.edge.api.OpenDoorCommand;
-import eu.brain.iot.edge.api.RobotEvent;
 import eu.brain.iot.edge.api.RobotPositionChanged;
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceStatus;
-import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
-import eu.brain.iot.eventing.api.BrainIoTEvent;
-import eu.brain.iot.eventing.api.EventBus;
-import eu.brain.iot.eventing.api.SmartBehaviour;
-import eu.brain.iot.robotsim.RobotSim;
-import eu.brain.iot.robotsim.fault.FaultSettings;
 import eu.brain.iot.robotsim.view.RobotView;
 
 /**
  * The edge bundle on the real event bus in Felix, against robot-sim over real HTTP: what it polls reaches
  * behaviours as events; command events from behaviours move robots and doors; a configuration change through
- * Config Admin takes effect in place; a robot that goes offline is reported once and recovers.
+ * Config Admin adds and removes robots in place. Faults: {@link EdgeFaultIntegrationTest}; a whole errand:
+ * {@link EdgeRouteIntegrationTest}.
  */
-class EdgeBusIntegrationTest {
+class EdgeBusIntegrationTest extends EdgeBusTestBase {
 
-    @InjectBundleContext
-    BundleContext context;
-    @InjectService(timeout = 5_000)
-    ConfigurationAdmin configurationAdmin;
-    @InjectService(timeout = 5_000)
-    EventBus bus;
-    @InjectService(timeout = 5_000)
-    DeviceModel model;
-
-    private EdgeTestSupport edge;
-    private RobotSim sim;
-    private ServiceRegistration<?> recorderRegistration;
-    private final List<BrainIoTEvent> received = new CopyOnWriteArrayList<>();
-
-    @BeforeEach
-    void start() throws Exception {
-        Hashtable<String, Object> recorder = new Hashtable<>();
-        recorder.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { RobotEvent.class.getName(),
-                DoorStateChanged.class.getName(), DeviceUnreachable.class.getName(),
-                DeviceRecovered.class.getName(), CommandOutcome.class.getName() });
-        SmartBehaviour<BrainIoTEvent> behaviour = received::add;
-        recorderRegistration = context.registerService(SmartBehaviour.class.getName(), behaviour, recorder);
-        edge = EdgeTestSupport.start(context, configurationAdmin, model);
-        sim = edge.sim;
-    }
-
-    /** Polls every 100 ms, gives up on an answer after 500 ms, reports after 2 failures, backs off up to 400 ms. */
-    private void configure(String... robots) throws Exception {
-        edge.configure(EdgeTestSupport.EDGE_PID, Map.of("fleet.url", sim.baseUri().toString(), "robots", robots,
-                "poll.period.ms", 100L, "request.timeout.ms", 500L, "unreachable.after.failures", 2,
-                "backoff.max.ms", 400L));
-    }
-
-    @AfterEach
-    void stop() throws Exception {
-        recorderRegistration.unregister();
-        edge.close();
-    }
-
-    private <E extends BrainIoTEvent> List<E> received(Class<E> type) {
-        return received.stream().filter(type::isInstance).map(type::cast).toList();
+    private List<String> ids() {
+        return model.providers().stream().map(ProviderSnapshot::id).toList();
     }
 
     private boolean fleetIsUp() {
@@ -95,9 +41,9 @@ class EdgeBusIntegrationTest {
     @Test
     void everyRobotsPositionReachesBehavioursOnTheBus() {
         // the edge announces a robot's first position when it is first seen: here, on the new fleet URL
-        await().atMost(DEADLINE).until(() -> received(RobotPositionChanged.class).stream().map(e -> e.robotId)
+        await().atMost(DEADLINE).until(() -> recorder.of(RobotPositionChanged.class).stream().map(e -> e.robotId)
                 .distinct().count() == 3);
-        for (RobotPositionChanged e : received(RobotPositionChanged.class)) {
+        for (RobotPositionChanged e : recorder.of(RobotPositionChanged.class)) {
             RobotView r = sim.robot(e.robotId);
             assertThat(e.x + "," + e.y).as(e.robotId).isEqualTo(r.x() + "," + r.y());
             assertThat(e.sourceNode).as("filled in by the bus").isNotNull();
@@ -111,46 +57,52 @@ class EdgeBusIntegrationTest {
         open.deviceId = "door1";
         open.commandId = "open-1";
         bus.deliver(open);
-        GoToCommand go = new GoToCommand();
-        go.deviceId = "robot3";
+        GoToCommand go = EdgeCommands.goTo("robot3", 9, 4);
         go.commandId = "go-1";
-        go.x = 9;
-        go.y = 4;
         bus.deliver(go);
-        await().atMost(DEADLINE).until(() -> received(CommandOutcome.class).size() == 2);
-        assertThat(received(CommandOutcome.class)).allSatisfy(o -> assertThat(o.accepted).as(o.reason).isTrue())
+        await().atMost(DEADLINE).until(() -> recorder.of(CommandOutcome.class).size() == 2);
+        assertThat(recorder.of(CommandOutcome.class)).allSatisfy(o -> assertThat(o.accepted).as(o.reason).isTrue())
                 .extracting(o -> o.commandId).containsExactlyInAnyOrder("open-1", "go-1");
 
         sim.step(10);
-        await().atMost(DEADLINE).until(() -> received(RobotPositionChanged.class).stream()
+        await().atMost(DEADLINE).until(() -> recorder.of(RobotPositionChanged.class).stream()
                 .anyMatch(e -> e.robotId.equals("robot3") && e.x == 9 && e.y == 4));
-        await().atMost(DEADLINE).until(() -> received(DoorStateChanged.class).stream()
+        await().atMost(DEADLINE).until(() -> recorder.of(DoorStateChanged.class).stream()
                 .anyMatch(e -> e.state.equals("open")));
         assertThat(model.resource("door1", "door", "state").orElseThrow().value()).isEqualTo("open");
     }
 
     @Test
-    void aNewConfigurationTakesEffectWithoutARestart() throws Exception {
-        await().atMost(DEADLINE).until(this::fleetIsUp);
-        configure("robot2");
-        await().atMost(DEADLINE).until(() -> model.providers().stream().map(ProviderSnapshot::id).toList()
-                .equals(List.of("robot2")));
-        configure();
-        await().atMost(DEADLINE).until(this::fleetIsUp);
-    }
+    void reconfigurationAddsAndRemovesRobotsInPlace() throws Exception {
+        Object modelService = context.getServiceReference(DeviceModel.class).getProperty(Constants.SERVICE_ID);
+        edge.configureEdge(Map.of("robots", new String[] { "robot1" }));
+        await("only robot1").atMost(DEADLINE).until(() -> ids().equals(List.of("robot1")));
 
-    @Test
-    void aRobotThatGoesOfflineIsReportedOnceAndComesBack() throws Exception {
-        configure();
-        await().atMost(DEADLINE).until(this::fleetIsUp);
-        sim.faults().setOwn(0, new FaultSettings(0, 0, 0, 0, true)); // robot1: the first robot of the map
-        await().atMost(DEADLINE).until(() -> !received(DeviceUnreachable.class).isEmpty());
-        assertThat(received(DeviceUnreachable.class)).singleElement().satisfies(e -> {
-            assertThat(e.deviceId).isEqualTo("robot1");
-            assertThat(e.reason).contains("offline");
-        });
-        sim.faults().clear();
-        await().atMost(DEADLINE).until(() -> received(DeviceRecovered.class).size() == 1);
-        assertThat(received(DeviceUnreachable.class)).hasSize(1);
+        int added = recorder.mark();
+        edge.configureEdge(Map.of("robots", new String[] { "robot1", "robot2", "robot3" }));
+        await("three robots, polled").atMost(DEADLINE).until(() -> ids().equals(List.of("robot1", "robot2", "robot3"))
+                && model.providers().stream().allMatch(p -> p.status() == ResourceStatus.OK));
+        // the added robots announce where they stand; robot1 was kept, not made anew: it announces nothing
+        await("the added robots' positions").atMost(DEADLINE).until(() -> recorder.since(added,
+                RobotPositionChanged.class).stream().map(e -> e.robotId).distinct().sorted().toList()
+                .equals(List.of("robot2", "robot3")));
+        for (RobotPositionChanged e : recorder.since(added, RobotPositionChanged.class)) {
+            assertThat(BusRecorder.at(e)).as(e.robotId).isEqualTo(BusRecorder.at(sim.robot(e.robotId)));
+        }
+        // and where an added robot goes
+        recorder.send(bus, EdgeCommands.goTo("robot2", 4, 4));
+        List<String> route = recorder.follow(sim, "robot2", () -> BusRecorder.at(sim.robot("robot2")).equals("4,4"),
+                10);
+        assertThat(route).startsWith("4,1").endsWith("4,4").hasSizeGreaterThanOrEqualTo(4);
+
+        edge.configureEdge(Map.of("robots", new String[] { "robot2" }));
+        await("only robot2").atMost(DEADLINE).until(() -> ids().equals(List.of("robot2")));
+        // and no removed robot comes back while robot2 is polled on
+        Instant removed = Instant.now().plusMillis(300);
+        await("robot2 polled on").atMost(DEADLINE).until(() -> model.provider("robot2").orElseThrow().lastPoll()
+                .isAfter(removed));
+        assertThat(ids()).containsExactly("robot2");
+        assertThat(context.getServiceReference(DeviceModel.class).getProperty(Constants.SERVICE_ID))
+                .as("the edge was not restarted").isEqualTo(modelService);
     }
 }

@@ -48,6 +48,10 @@ final class EdgeTestSupport implements AutoCloseable {
     static final Duration DEADLINE = Duration.ofSeconds(20);
     static final String EDGE_PID = "eu.brain.iot.edge";
     static final String REST_PID = "eu.brain.iot.edge.rest";
+    /** Backoff at most 400 ms after 2 failed polls in a row (500 ms each at most): faults show within a second. */
+    static final long BACKOFF_MAX_MS = 400;
+    static final Map<String, Object> FAIL_FAST = Map.of("request.timeout.ms", 500L, "unreachable.after.failures", 2,
+            "backoff.max.ms", BACKOFF_MAX_MS);
     static final ObjectMapper JSON = new ObjectMapper();
     /** The whiteboard names of the edge's REST servlets. */
     private static final List<String> SERVLETS = List.of("eu.brain.iot.edge.rest", "eu.brain.iot.edge.rest.subscribe");
@@ -59,6 +63,7 @@ final class EdgeTestSupport implements AutoCloseable {
     private final HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
     private final List<String> configured = new ArrayList<>();
     private final Map<String, Object> restProperties = new java.util.HashMap<>();
+    private final Map<String, Object> edgeProperties = new java.util.HashMap<>();
 
     private EdgeTestSupport(RobotSim sim, URI base, ConfigurationAdmin cm, BundleContext context) {
         this.sim = sim;
@@ -72,17 +77,36 @@ final class EdgeTestSupport implements AutoCloseable {
      * every robot and door is polled and the REST servlets are registered.
      */
     static EdgeTestSupport start(BundleContext context, ConfigurationAdmin cm, DeviceModel model) throws Exception {
+        return start(context, cm, model, Map.of());
+    }
+
+    /**
+     * Like {@link #start(BundleContext, ConfigurationAdmin, DeviceModel)}, with these edge settings as well (for
+     * example {@link #FAIL_FAST}); they are in effect when it returns, the fleet URL and they came in one update.
+     */
+    static EdgeTestSupport start(BundleContext context, ConfigurationAdmin cm, DeviceModel model,
+            Map<String, Object> settings) throws Exception {
         RobotSim sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
         try {
             EdgeTestSupport edge = new EdgeTestSupport(sim, awaitRest(context), cm, context);
             Instant configuredAt = Instant.now();
-            edge.configure(EDGE_PID, Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", 100L));
+            edge.edgeProperties.putAll(Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", 100L));
+            edge.configureEdge(settings);
             edge.awaitProvidersOk(model, configuredAt);
             return edge;
         } catch (Exception | Error e) {
             sim.close();
             throw e;
         }
+    }
+
+    /**
+     * Changes these settings of the edge (PID {@value #EDGE_PID}) and keeps the others this test set: the edge
+     * applies the new configuration in place.
+     */
+    void configureEdge(Map<String, Object> changes) throws IOException {
+        edgeProperties.putAll(changes);
+        configure(EDGE_PID, edgeProperties);
     }
 
     /** Sets a configuration (for any bundle: location "?"), to be deleted by {@link #close()}. */
