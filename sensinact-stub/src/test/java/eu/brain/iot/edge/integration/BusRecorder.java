@@ -70,7 +70,8 @@ final class BusRecorder implements AutoCloseable {
 
     /** The events of this type that arrived after the mark. */
     <E extends BrainIoTEvent> List<E> since(int mark, Class<E> type) {
-        List<BrainIoTEvent> all = events;
+        // a copy first: a sub-list view of a CopyOnWriteArrayList fails once the bus adds an event to it
+        List<BrainIoTEvent> all = List.copyOf(events);
         return all.subList(mark, all.size()).stream().filter(type::isInstance).map(type::cast).toList();
     }
 
