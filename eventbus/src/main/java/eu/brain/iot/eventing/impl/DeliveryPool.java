@@ -118,7 +118,8 @@ final class DeliveryPool {
 
     private ConsumerChannel awaitReady(DeliveryWorker worker) {
         ConsumerChannel channel = spin();
-        while (channel == null) {
+        boolean retired = false;
+        while (channel == null && running && !retired) {
             parked.addFirst(worker);
             channel = ready.poll();
             if (channel != null || !running) {
@@ -129,12 +130,18 @@ final class DeliveryPool {
             LockSupport.parkNanos(this, settings.keepAliveNanos());
             boolean notWoken = parked.remove(worker); // false: a publisher popped us to take a turn
             channel = ready.poll();
-            if (channel == null && (!running || notWoken && retireIfSurplus())) {
-                break;
+            if (channel == null && running && notWoken) {
+                retired = retireIfSurplus(); // counted out there
             }
         }
-        if (channel == null && !running) {
-            workerCount.decrementAndGet();
+        if (channel == null && !retired) {
+            // Stopping. The bus queues the last turns of its closed behaviours before it stops the pool, so a
+            // poll after seeing the pool stopped finds any of them this worker's earlier polls missed: without
+            // it, a worker woken for such a turn could end and leave the behaviour never given back.
+            channel = ready.poll();
+            if (channel == null) {
+                workerCount.decrementAndGet();
+            }
         }
         return channel;
     }

@@ -109,10 +109,12 @@ final class StallWatchdog implements Runnable {
             LockSupport.parkNanos(this, tickNanos);
             long now = System.nanoTime();
             // A watchdog that was itself held up (a GC pause, a starved machine) cannot tell a stuck behaviour
-            // from a paused process: it then only restarts its clocks.
-            boolean late = now - last > 2 * tickNanos;
+            // from a paused process: the time it was late by does not count towards a stall. Only that time:
+            // restarting the clocks instead meant that on a busy machine, where late ticks are common, a blocked
+            // behaviour could go unnoticed for as long as the ticks kept coming late.
+            long lateNanos = Math.max(0, now - last - tickNanos);
             last = now;
-            if (inspect(now, late)) {
+            if (inspect(now, lateNanos)) {
                 lastBusy = now;
             } else if (now - lastBusy >= SLEEP_AFTER_IDLE_NANOS) {
                 sleepUntilBusy();
@@ -122,7 +124,7 @@ final class StallWatchdog implements Runnable {
     }
 
     /** @return whether any worker was inside a turn */
-    private boolean inspect(long now, boolean late) {
+    private boolean inspect(long now, long lateNanos) {
         boolean busy = false;
         int stalled = 0;
         for (DeliveryWorker worker : pool.workers()) {
@@ -143,10 +145,8 @@ final class StallWatchdog implements Runnable {
                 watch.since = now;
                 watch.cpuSince = NOT_TAKEN;
             } else if (!watch.stalled) {
-                if (late) {
-                    watch.since = now;
-                    watch.cpuSince = NOT_TAKEN;
-                } else if (held(worker.thread, watch, now)) {
+                watch.since = Math.min(now, watch.since + lateNanos);
+                if (held(worker.thread, watch, now)) {
                     stalled(worker, channel, now - watch.since);
                 }
             }
