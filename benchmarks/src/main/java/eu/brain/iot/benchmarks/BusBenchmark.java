@@ -44,21 +44,13 @@ public final class BusBenchmark {
         report.environment(settings);
         List<ContenderResult> results = new ArrayList<>();
         for (Contender contender : settings.contenders()) {
-            results.add(settings.fork() ? forked(contender, args) : run(contender, settings));
+            results.add(settings.fork() ? ForkedRun.run(contender, args) : run(contender, settings));
         }
         report.table(results);
         report.load("at the end");
         if (results.stream().anyMatch(r -> r.error() != null)) {
             System.exit(1);
         }
-    }
-
-    private static ContenderResult forked(Contender contender, String[] args) {
-        ContenderResult result = ForkedRun.run(contender, args);
-        if (result.error() != null) {
-            System.err.println("   FAILED: " + result.error());
-        }
-        return result;
     }
 
     private static ContenderResult run(Contender contender, Settings settings) {

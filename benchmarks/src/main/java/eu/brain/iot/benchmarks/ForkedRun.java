@@ -37,14 +37,30 @@ final class ForkedRun {
             result = Files.createTempFile("bus-benchmark-" + contender.key() + "-", ".result");
             List<String> command = new ArrayList<>();
             command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
-            command.addAll(ManagementFactory.getRuntimeMXBean().getInputArguments());
+            for (String option : ManagementFactory.getRuntimeMXBean().getInputArguments()) {
+                if (!option.startsWith("-agentlib:jdwp")) { // a debugger's port is this JVM's alone
+                    command.add(option);
+                }
+            }
             command.addAll(List.of("-cp", System.getProperty("java.class.path"), BusBenchmark.class.getName()));
             command.addAll(withoutOwnOptions(args));
             command.addAll(List.of("--contenders", contender.key(), RESULT_OPTION, result.toString()));
             // The forked JVM's progress goes to our standard error; it prints nothing on standard output.
             Process process = new ProcessBuilder(command).redirectOutput(ProcessBuilder.Redirect.INHERIT)
                     .redirectError(ProcessBuilder.Redirect.INHERIT).start();
-            int exit = process.waitFor();
+            // A launcher stopped by Ctrl-C or kill must not leave a benchmark JVM busy on the cores.
+            Thread stopChild = new Thread(process::destroyForcibly, "stop-forked-benchmark");
+            Runtime.getRuntime().addShutdownHook(stopChild);
+            int exit;
+            try {
+                exit = process.waitFor();
+            } finally {
+                try {
+                    Runtime.getRuntime().removeShutdownHook(stopChild);
+                } catch (IllegalStateException e) {
+                    // the launcher is shutting down already: the hook stops the child
+                }
+            }
             if (Files.size(result) == 0) {
                 return ContenderResult.failed(contender, "the forked JVM ended (exit code " + exit
                         + ") without a result; its messages are above");

@@ -121,7 +121,9 @@ class FabricNodeSmokeTest {
             assertThat(node.output())
                     .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up, \\d+ bundles installed\\)")
                     .containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms")
-                    .as("no shell in check mode").doesNotContain("Gogo").doesNotContain("Exception");
+                    .as("no shell in check mode").doesNotContain("Gogo").doesNotContain("Exception")
+                    .as("SPI Fly's INFO lines are silenced (fabric.node.jul.levels)")
+                    .doesNotContain("Registered provider");
         }
     }
 }

@@ -1,6 +1,7 @@
 package eu.brain.iot.node.ready;
 
 import java.lang.management.ManagementFactory;
+import java.util.Arrays;
 import java.util.Dictionary;
 import java.util.Hashtable;
 import java.util.List;
@@ -187,8 +188,10 @@ public final class ReadyReporter {
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()) + 1,
                 level);
         if (problems.isEmpty()) {
+            // Only the bundles started so far: the shell's level (and File Install's bundles) come after this line.
+            long started = Arrays.stream(bundles).filter(b -> BundleHealth.startLevel(b) <= level).count();
             System.out.printf("fabric node: all %d bundles active in %d ms (start levels 1 to %d: the core, then "
-                    + "the edge and its REST API)%n", bundles.length, sinceJvmStart, level);
+                    + "the edge and its REST API)%n", started, sinceJvmStart, level);
         } else {
             System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));

@@ -24,9 +24,10 @@ class FaultRecoveryTest {
 
     private static final Duration DEADLINE = Duration.ofSeconds(15);
 
-    // 100 ms period, 300 ms timeout, unreachable after 2 failures, backoff up to 400 ms
+    // 100 ms period, 1 s timeout (a healthy robot must not time out on a loaded machine: it would be reported too),
+    // unreachable after 2 failures, backoff up to 400 ms
     @RegisterExtension
-    final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of(), List.of(), 100, 300, 8, 1, 2, 400));
+    final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of(), List.of(), 100, 1000, 8, 1, 2, 400));
 
     @BeforeEach
     void allPolled() {
@@ -61,7 +62,7 @@ class FaultRecoveryTest {
 
     @ParameterizedTest(name = "{0}")
     @CsvSource(delimiter = '|', value = {
-            "timeout        | {\"latencyMs\":2000}   | no answer within 300 ms",
+            "timeout        | {\"latencyMs\":2000}   | no answer within 1000 ms",
             "HTTP 500       | {\"errorRate\":1.0}    | HTTP 500",
             "malformed JSON | {\"malformedRate\":1.0} | malformed JSON from robot2 at line 1",
             "dropped        | {\"dropRate\":1.0}     | closed the connection without answering",
