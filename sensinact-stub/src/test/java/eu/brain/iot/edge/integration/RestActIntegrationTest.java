@@ -8,41 +8,15 @@ import static org.awaitility.Awaitility.await;
 
 import java.net.http.HttpResponse;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.osgi.framework.BundleContext;
-import org.osgi.service.cm.ConfigurationAdmin;
-import org.osgi.test.common.annotation.InjectBundleContext;
-import org.osgi.test.common.annotation.InjectService;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
-import eu.brain.iot.edge.model.api.DeviceModel;
 
 /** ACT on the edge's REST API: commands reach the simulated devices, refusals and bad input say why. */
-class RestActIntegrationTest {
+class RestActIntegrationTest extends EdgeRestTestBase {
 
     private static final String GOTO = "/sensinact/providers/%s/services/control/resources/goTo/act";
-
-    @InjectBundleContext
-    static BundleContext context;
-    @InjectService(timeout = 10_000)
-    static ConfigurationAdmin cm;
-    @InjectService(timeout = 10_000)
-    static DeviceModel model;
-
-    static EdgeTestSupport edge;
-
-    @BeforeAll
-    static void start() throws Exception {
-        edge = EdgeTestSupport.start(context, cm, model);
-    }
-
-    @AfterAll
-    static void stop() throws Exception {
-        edge.close();
-    }
 
     @Test
     void goToMovesTheRobot() throws Exception {

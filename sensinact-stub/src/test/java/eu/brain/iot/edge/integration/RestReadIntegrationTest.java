@@ -10,40 +10,14 @@ import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 
-import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.osgi.framework.BundleContext;
-import org.osgi.service.cm.ConfigurationAdmin;
-import org.osgi.test.common.annotation.InjectBundleContext;
-import org.osgi.test.common.annotation.InjectService;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
-import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.robotsim.view.RobotView;
 
 /** GET on the edge's REST API in a real framework, over real HTTP, against the simulator: live values and errors. */
-class RestReadIntegrationTest {
-
-    @InjectBundleContext
-    static BundleContext context;
-    @InjectService(timeout = 10_000)
-    static ConfigurationAdmin cm;
-    @InjectService(timeout = 10_000)
-    static DeviceModel model;
-
-    static EdgeTestSupport edge;
-
-    @BeforeAll
-    static void start() throws Exception {
-        edge = EdgeTestSupport.start(context, cm, model);
-    }
-
-    @AfterAll
-    static void stop() throws Exception {
-        edge.close();
-    }
+class RestReadIntegrationTest extends EdgeRestTestBase {
 
     @Test
     void listsEveryProviderWithKindStatusAndLastPoll() throws Exception {

@@ -21,39 +21,26 @@ import java.util.concurrent.CopyOnWriteArrayList;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
-import org.osgi.framework.BundleContext;
-import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.service.log.LogEntry;
 import org.osgi.service.log.LogLevel;
 import org.osgi.service.log.LogReaderService;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.admin.LoggerAdmin;
-import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
 
 import com.fasterxml.jackson.databind.JsonNode;
 
-import eu.brain.iot.edge.model.api.DeviceModel;
 
 /** The SSE stream of changes: what it sends, its heartbeat, and the end of a client's subscription. */
-class SseIntegrationTest {
+class SseIntegrationTest extends EdgeRestTestBase {
 
-    @InjectBundleContext
-    static BundleContext context;
-    @InjectService(timeout = 10_000)
-    static ConfigurationAdmin cm;
-    @InjectService(timeout = 10_000)
-    static DeviceModel model;
     @InjectService(timeout = 10_000)
     static LogReaderService logs;
     @InjectService(timeout = 10_000)
     static LoggerAdmin loggers;
 
-    static EdgeTestSupport edge;
-
     @BeforeAll
-    static void start() throws Exception {
-        edge = EdgeTestSupport.start(context, cm, model);
+    static void configure() throws Exception {
         // frequent heartbeats, so that a client that left is noticed within the test's patience
         edge.configureRest(Map.of("sse.heartbeat.ms", 200L));
         // the edge says at INFO when a client left
@@ -61,9 +48,8 @@ class SseIntegrationTest {
     }
 
     @AfterAll
-    static void stop() throws Exception {
+    static void resetLogLevels() {
         loggers.getLoggerContext("eu.brain.iot.edge").setLogLevels(Map.of());
-        edge.close();
     }
 
     /** An open stream: its lines, read on a thread of its own. */
