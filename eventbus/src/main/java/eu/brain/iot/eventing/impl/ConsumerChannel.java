@@ -4,6 +4,7 @@ import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
 import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
 import org.osgi.service.log.Logger;
@@ -73,6 +74,8 @@ final class ConsumerChannel {
     /** The turn token: set while the channel waits in the run queue or a worker delivers its events. */
     private volatile boolean scheduled;
     private volatile boolean closed;
+    /** Whether the warning about discarded events was logged; set by whoever discards first. */
+    private final AtomicBoolean discardLogged = new AtomicBoolean();
     /** The worker thread inside a turn, {@link #INTERRUPTING}, or {@code null}. */
     private volatile Object runner;
 
@@ -217,7 +220,8 @@ final class ConsumerChannel {
             e.counters.discarded.increment();
             count++;
         }
-        if (count > 0) {
+        if (count > 0 && discardLogged.compareAndSet(false, true)) {
+            // once: publishers that meet the closed channel discard what they queued themselves
             log.warn("Smart behaviour {} (bundle {}) went away with {} queued events; they were discarded "
                     + "and counted as 'discarded' in the bus statistics.", spec.name(), spec.bundle(), count);
         }
