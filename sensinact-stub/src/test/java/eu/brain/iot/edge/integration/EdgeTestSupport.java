@@ -11,6 +11,7 @@ import java.net.http.HttpResponse;
 import java.time.Duration;
 import java.time.Instant;
 import java.util.ArrayList;
+import java.util.HashMap;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Map;
@@ -62,8 +63,8 @@ final class EdgeTestSupport implements AutoCloseable {
     private final BundleContext context;
     private final HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
     private final List<String> configured = new ArrayList<>();
-    private final Map<String, Object> restProperties = new java.util.HashMap<>();
-    private final Map<String, Object> edgeProperties = new java.util.HashMap<>();
+    private final Map<String, Object> restProperties = new HashMap<>();
+    private final Map<String, Object> edgeProperties = new HashMap<>();
 
     private EdgeTestSupport(RobotSim sim, URI base, ConfigurationAdmin cm, BundleContext context) {
         this.sim = sim;
@@ -119,14 +120,15 @@ final class EdgeTestSupport implements AutoCloseable {
     }
 
     /**
-     * Configures the edge's REST servlets and returns once both are registered again with these properties:
+     * Changes these settings of the edge's REST servlets (PID {@value #REST_PID}), keeping the others this test
+     * set, and returns once both servlets are registered again with them:
      * Config Admin applies a change asynchronously and DS re-activates the servlets, so a request sent at once
      * could meet the old servlet or none (404).
      */
     void configureRest(Map<String, Object> properties) throws IOException {
-        configure(REST_PID, properties);
         restProperties.putAll(properties);
-        awaitServlets(properties, true);
+        configure(REST_PID, restProperties);
+        awaitServlets(restProperties, true);
     }
 
     /**
@@ -192,6 +194,9 @@ final class EdgeTestSupport implements AutoCloseable {
                 return null;
             }
             ServiceReference<HttpServiceRuntime> ref = context.getServiceReference(HttpServiceRuntime.class);
+            if (ref == null) {
+                return null;
+            }
             Object endpoints = ref.getProperty("osgi.http.endpoint");
             List<String> all = endpoints instanceof String[] a ? List.of(a)
                     : endpoints instanceof java.util.Collection<?> c ? c.stream().map(String::valueOf).toList()
