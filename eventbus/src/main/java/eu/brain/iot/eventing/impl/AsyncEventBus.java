@@ -61,7 +61,7 @@ final class AsyncEventBus implements EventBus {
 
     private final Object consumersLock = new Object();
     private final Map<Long, ConsumerChannel> channels = new LinkedHashMap<>();
-    private volatile RouteTable routes = RouteTable.EMPTY;
+    private volatile RouteTable routes = new RouteTable(List.of());
     private final EventHold hold = new EventHold();
     private volatile UnhandledEventPolicy policy;
     private final AtomicBoolean policyFailureLogged = new AtomicBoolean();
@@ -451,7 +451,7 @@ final class AsyncEventBus implements EventBus {
         synchronized (consumersLock) {
             channels.values().forEach(ConsumerChannel::close);
             channels.clear();
-            routes = RouteTable.EMPTY;
+            routes = new RouteTable(List.of());
             held = hold.removeAll();
             consumersLock.notifyAll();
         }

@@ -13,11 +13,10 @@ import java.util.function.Function;
  * Which behaviours take which event types, for one fixed set of behaviours. A new table replaces the old one
  * whenever a behaviour comes or goes, so a table never changes; only its cache of computed routes grows.
  * Routes are cached by type name and remember their class weakly, so a table never keeps an uninstalled
- * bundle's classes alive.
+ * bundle's classes alive. Cached routes hold their bus's counters, so a table, even an empty one, belongs to
+ * one bus and is never shared between buses.
  */
 final class RouteTable {
-
-    static final RouteTable EMPTY = new RouteTable(List.of());
 
     private final List<ConsumerChannel> typedOrNamed;
     final ConsumerChannel[] lastResort;
