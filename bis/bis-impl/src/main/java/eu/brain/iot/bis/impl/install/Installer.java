@@ -55,6 +55,8 @@ public final class Installer implements BundleInstaller {
     private final Consumer<String> warn;
     private final Consumer<String> info;
     private final Map<String, Promise<InstalledBehaviour>> inflight = new HashMap<>();
+    /** Why a journal entry is not back: written on the installer's thread, read by Gogo. */
+    private final Map<String, String> restoreProblems = new java.util.concurrent.ConcurrentHashMap<>();
     private boolean closed;
 
     /**
@@ -184,6 +186,11 @@ public final class Installer implements BundleInstaller {
         return ledger.blocked();
     }
 
+    /** @return why a journal entry could not be installed again, or null */
+    public String restoreProblem(String symbolicName) {
+        return restoreProblems.get(symbolicName);
+    }
+
     /** Journal entries not installed again (yet) since the start. */
     public List<BehaviourRecord> pending() {
         return ledger.pending();
@@ -200,6 +207,7 @@ public final class Installer implements BundleInstaller {
                 try {
                     restore(r);
                 } catch (InstallException e) {
+                    restoreProblems.put(r.symbolicName(), e.getMessage());
                     warn.accept("the journal lists " + r.symbolicName() + " " + r.version() + " (installed because: "
                             + r.reason() + "), which could not be installed again: " + e.getMessage()
                             + "; it stays in the journal and is tried again at the next start");

@@ -199,15 +199,16 @@ public final class Repositories {
             }
             throw e;
         }
-        if (h.snapshot == null) {
-            loaded.countDown();
-        }
+        boolean first = h.snapshot == null;
         h.validators = content.validators();
         h.refusedDigest = null;
         h.snapshot = snapshot;
         h.readAt = now;
         info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
         h.publish(signature, 0, null, now);
+        if (first) {
+            loaded.countDown(); // after the snapshot is in place: a waiting journal restore reads it at once
+        }
     }
 
     private static String sha256(byte[] bytes) {
