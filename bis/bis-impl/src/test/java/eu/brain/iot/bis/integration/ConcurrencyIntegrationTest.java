@@ -4,6 +4,7 @@ import static eu.brain.iot.bis.integration.TestRepository.ROBOT;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT_COLLISION;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT_UNLOAD;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
 
 import java.util.ArrayList;
 import java.util.List;
@@ -13,6 +14,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.Future;
 
 import org.junit.jupiter.api.Test;
+import org.osgi.framework.Bundle;
 import org.osgi.util.promise.Promise;
 
 import eu.brain.iot.bis.api.BundleInstaller;
@@ -55,12 +57,22 @@ class ConcurrencyIntegrationTest extends BisTestBase {
     void aRequestWhileAnInstallRunsGetsThatInstallsPromise() throws Exception {
         BundleInstaller installer = configure(settings());
         awaitOffered(installer, ROBOT_UNLOAD);
-        Promise<InstalledBehaviour> first = installer.install(byType(ROBOT_UNLOAD));
-        Promise<InstalledBehaviour> second = installer.install(byName(ROBOT, false));
-        if (!first.isDone()) {
+        // hold the install in its last step: without the bus, the robot's smart behaviour cannot be registered
+        Bundle bus = bundle("eu.brain.iot.eventbus");
+        bus.stop();
+        Promise<InstalledBehaviour> first;
+        Promise<InstalledBehaviour> second;
+        try {
+            first = installer.install(byType(ROBOT_UNLOAD));
+            await().atMost(DEADLINE).until(() -> bundle(ROBOT) != null && bundle(ROBOT).getState() == Bundle.ACTIVE);
+            second = installer.install(byName(ROBOT, false));
+            assertThat(first.isDone()).isFalse();
             assertThat(second).isSameAs(first);
+        } finally {
+            bus.start();
         }
         assertThat(value(second).bundleId).isEqualTo(value(first).bundleId);
         assertThat(bundleCount(ROBOT)).isEqualTo(1);
+        assertThat(installer.installed()).hasSize(1);
     }
 }
