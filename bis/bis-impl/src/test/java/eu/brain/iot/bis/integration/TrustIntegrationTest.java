@@ -78,4 +78,17 @@ class TrustIntegrationTest extends BisTestBase {
                 .containsExactly(ROBOT);
         assertThat(command("repos")).contains("signature: valid");
     }
+
+    @Test
+    void aTrustedKeyThatIsNoKeyStopsTheInstallerInsteadOfTurningChecksOff() throws Exception {
+        var settings = settings();
+        settings.put("trusted.keys", new String[] { "not-a-key" });
+
+        configureOnly(settings);
+
+        await().atMost(DEADLINE).until(() -> logMessages().stream().anyMatch(m -> m.contains("NOT started")));
+        assertThat(logMessages()).filteredOn(m -> m.contains("NOT started")).first().asString()
+                .contains("trusted.keys", "'not-a-key'", "neither an existing key file nor an Ed25519 public key");
+        assertThat(context.getServiceReference(BundleInstaller.class)).isNull();
+    }
 }

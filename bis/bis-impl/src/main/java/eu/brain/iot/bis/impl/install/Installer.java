@@ -59,14 +59,12 @@ public final class Installer implements BundleInstaller {
     private final Map<String, String> restoreProblems = new java.util.concurrent.ConcurrentHashMap<>();
     private boolean closed;
 
-    /**
-     * @throws java.io.IOException when the journal cannot be read (the message names the file and line)
-     */
+    /** @param loaded what the journal held at start */
     public static Installer create(BundleContext context, Resolver resolver, Repositories repositories,
-            UrlReader reader, Journal journal, List<String> prefer, long activationTimeoutMillis,
+            UrlReader reader, Journal journal, Journal.State loaded, List<String> prefer, long activationTimeoutMillis,
             Supplier<EventBusStatistics> statistics, ExecutorService executor, PromiseFactory promises,
-            Consumer<String> error, Consumer<String> warn, Consumer<String> info) throws java.io.IOException {
-        Ledger ledger = new Ledger(journal, journal.load(), error);
+            Consumer<String> error, Consumer<String> warn, Consumer<String> info) {
+        Ledger ledger = new Ledger(journal, loaded, error);
         Activation activation = new Activation(context, statistics);
         Transaction transaction = new Transaction(context, resolver, repositories, reader, activation,
                 activationTimeoutMillis, warn);
