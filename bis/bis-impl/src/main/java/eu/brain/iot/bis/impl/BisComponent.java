@@ -114,6 +114,7 @@ public final class BisComponent {
                     + " hashes still are)");
         }
         Parts parts = new Parts(repositories, installer, scheduler, callbacks, statistics);
+        repositories.onChange(installer::retryPending);
         repositories.start();
         long restoreTimeout = Math.max(0, config.restore_timeout_ms());
         named("brain-iot-bis-start").newThread(() -> restoreThenRegister(context, parts, restoreTimeout)).start();

@@ -4,9 +4,11 @@ import static eu.brain.iot.bis.integration.TestRepository.DOOR;
 import static eu.brain.iot.bis.integration.TestRepository.DOOR_CLOSED;
 import static eu.brain.iot.bis.integration.TestRepository.EVENTS;
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
 
 import java.nio.file.Files;
 import java.nio.file.StandardOpenOption;
+import java.nio.file.attribute.FileTime;
 
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.Bundle;
@@ -52,6 +54,7 @@ class JournalIntegrationTest extends BisTestBase {
         unconfigure();
         bundle(DOOR).uninstall();
         bundle(EVENTS).uninstall();
+        byte[] original = Files.readAllBytes(repo.jar("behaviour-door"));
         Files.write(repo.jar("behaviour-door"), new byte[] { 0 }, StandardOpenOption.APPEND); // tampered meanwhile
 
         BundleInstaller restarted = configure(settings());
@@ -60,6 +63,13 @@ class JournalIntegrationTest extends BisTestBase {
         assertThat(restarted.installed()).isEmpty();
         assertThat(command("list")).contains("journal, not back yet: " + DOOR, "problem:", "SHA-256");
         assertThat(Files.readString(journal.resolve("journal.tsv"))).as("kept for the next start").contains(DOOR);
+
+        // the repository is repaired: when the index is read anew, the journal's entry comes back
+        Files.write(repo.jar("behaviour-door"), original);
+        Files.setLastModifiedTime(repo.index, FileTime.fromMillis(System.currentTimeMillis() + 5_000));
+        await().atMost(DEADLINE).until(() -> bundle(DOOR) != null && busKnows(DOOR));
+        assertThat(restarted.installed()).extracting(b -> b.symbolicName).containsExactly(DOOR);
+        assertThat(command("list")).doesNotContain("not back yet");
     }
 
     @Test
