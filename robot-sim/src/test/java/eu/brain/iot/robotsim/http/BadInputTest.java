@@ -118,7 +118,7 @@ class BadInputTest {
         JsonNode error = a.json();
         assertThat(error.get("error").asText()).contains("use POST");
         Client.Answer put = client.send(HttpRequest.newBuilder(sim.baseUri().resolve("robot1/robot_local_control/state"))
-                .PUT(HttpRequest.BodyPublishers.ofString("{}")));
+                .header("Content-Type", "application/json").PUT(HttpRequest.BodyPublishers.ofString("{}")));
         assertThat(put.status()).isEqualTo(405);
     }
 
