@@ -33,7 +33,7 @@ final class StrictJsonReader {
             JsonNode tree = value(p, first, 1, maxDepth);
             JsonToken after = p.nextToken();
             if (after != null) {
-                throw new ApiException(400, "body", "unexpected " + after.asString() + " after the JSON document"
+                throw new ApiException(400, "body", "unexpected '" + p.getText() + "' after the JSON document"
                         + at(p.currentTokenLocation()) + " (send one JSON object)");
             }
             return tree;
