@@ -88,6 +88,11 @@ final class RawHttp implements AutoCloseable {
         return new Answer(Integer.parseInt(status.split(" ")[1]), headers, new String(body, StandardCharsets.UTF_8));
     }
 
+    /** Bytes that arrived and were not read yet. */
+    int available() throws IOException {
+        return in.available();
+    }
+
     /** True when the server closed the connection (end of stream) before the read timeout. */
     boolean closedByServer() throws IOException {
         try {
