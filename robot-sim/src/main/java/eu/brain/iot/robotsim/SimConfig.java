@@ -126,11 +126,8 @@ public final class SimConfig {
     public static String hostName(String name) {
         String n = Objects.requireNonNull(name, "host name").strip().toLowerCase(Locale.ROOT);
         String bare = n.startsWith("[") && n.endsWith("]") ? n.substring(1, n.length() - 1) : n;
-        if (bare.contains(":")) {
-            if (!bare.matches("[0-9a-f:.]+(%[a-z0-9]+)?")) {
-                throw new IllegalArgumentException("'" + name + "' is not an IPv6 address");
-            }
-            return "[" + bare + "]";
+        if (bare.contains(":") && bare.matches("[0-9a-f:.]+(%[a-z0-9]+)?")) {
+            return "[" + bare + "]"; // an IPv6 address
         }
         if (!HOST_NAME.matcher(n).matches()) {
             throw new IllegalArgumentException("'" + name + "' is not a host name (give a name or an address, "
