@@ -67,7 +67,8 @@ public final class RobotSim implements AutoCloseable {
             }
             faults.setOwn(i, f);
         });
-        WorldThread worldThread = new WorldThread(new World(map, config.rules()), faults);
+        WorldThread worldThread = new WorldThread(new World(map, config.rules()), faults,
+                config.maxQueuedMissions());
         Map<String, Object> index = new LinkedHashMap<>();
         index.put("name", map.name());
         index.put("width", map.width());
@@ -80,6 +81,7 @@ public final class RobotSim implements AutoCloseable {
         HttpServer server;
         try {
             server = HttpServer.start(config.bindAddress(), config.port(), config.ioThreads(),
+                    new HttpServer.Limits(config.allowedHosts(), config.requestTimeoutMillis()),
                     new HttpServer.Wiring(worldThread, worldThread.views(), faults, robots, doors,
                             List.copyOf(robots.keySet()), index));
         } catch (IOException | RuntimeException e) {

@@ -37,14 +37,14 @@ public final class WorldThread implements AutoCloseable {
     private final Access access;
     private final StepEngine engine;
 
-    WorldThread(World world, FaultTable faults) {
+    WorldThread(World world, FaultTable faults, int maxQueuedMissions) {
         this.executor = Executors.newSingleThreadScheduledExecutor(r -> {
             Thread t = new Thread(r, "robot-sim-world");
             t.setDaemon(true);
             return t;
         });
         this.engine = new StepEngine(world, faults::offline);
-        this.access = new Access(world, new Commands(world), new ViewPublisher(world));
+        this.access = new Access(world, new Commands(world, maxQueuedMissions), new ViewPublisher(world));
     }
 
     ViewPublisher views() {

@@ -37,12 +37,17 @@ public final class ServeCommand {
                                    keys latencyMs, errorRate, malformedRate, dropRate, offline
                                    e.g. --fault errorRate=0.1   --fault robot2:offline=true
               --io-threads N       HTTP I/O threads (default: one per core)
+              --max-queue N        missions a robot may have waiting; one more is refused with 429 (default 64)
+              --allow-host NAME    also accept this name in the Host and Origin headers, repeatable (default:
+                                   127.0.0.1, localhost, [::1] and the --bind address, each with the port)
+              --request-timeout-ms N  time a request may take to arrive whole once begun; then 408 (default 10000)
               --quiet              do not list every robot's and door's URL
               --help               show this help
             """;
 
     private static final Set<String> VALUED = Set.of("port", "bind", "map", "seed", "speed", "step-ms",
-            "door-open-steps", "deadlock-steps", "fault", "io-threads");
+            "door-open-steps", "deadlock-steps", "fault", "io-threads", "max-queue", "allow-host",
+            "request-timeout-ms");
     private static final Set<String> SWITCHES = Set.of("manual-step", "quiet", "help");
 
     private ServeCommand() {
@@ -51,12 +56,26 @@ public final class ServeCommand {
     /** Reads the flags into a configuration; {@code --help} is checked by the caller first. */
     public static SimConfig config(Flags f) throws UsageException {
         SimConfig.Builder b = SimConfig.builder()
-                .port(f.intValue("port", DEFAULT_PORT, 0, 65535))
-                .bindAddress(f.string("bind", "127.0.0.1"))
-                .speed(f.doubleValue("speed", 1.0, 0, 10_000))
+                .port(f.intValue("port", DEFAULT_PORT, 0, 65535));
+        try {
+            b.bindAddress(f.string("bind", "127.0.0.1"));
+        } catch (IllegalArgumentException e) {
+            throw new UsageException("--bind: " + e.getMessage());
+        }
+        b.speed(f.doubleValue("speed", 1.0, 0, 10_000))
                 .stepMillis(f.intValue("step-ms", SimConfig.DEFAULT_STEP_MILLIS, 1, 3_600_000))
                 .manualStep(f.has("manual-step"))
-                .ioThreads(f.intValue("io-threads", 0, 0, 256));
+                .ioThreads(f.intValue("io-threads", 0, 0, 256))
+                .maxQueuedMissions(f.intValue("max-queue", SimConfig.DEFAULT_MAX_QUEUED_MISSIONS, 1, 1_000_000))
+                .requestTimeoutMillis(f.intValue("request-timeout-ms", SimConfig.DEFAULT_REQUEST_TIMEOUT_MILLIS, 100,
+                        3_600_000));
+        for (String host : f.all("allow-host")) {
+            try {
+                b.allowHost(host);
+            } catch (IllegalArgumentException e) {
+                throw new UsageException("--allow-host: " + e.getMessage());
+            }
+        }
         String mapFile = f.string("map", null);
         if (mapFile != null) {
             b.map(readMap(mapFile));

@@ -2,7 +2,6 @@ package eu.brain.iot.robotsim.http;
 
 import eu.brain.iot.robotsim.view.Json;
 import io.netty.buffer.Unpooled;
-import io.netty.channel.ChannelFutureListener;
 import io.netty.channel.ChannelHandlerContext;
 import io.netty.handler.codec.http.DefaultFullHttpResponse;
 import io.netty.handler.codec.http.FullHttpResponse;
@@ -18,13 +17,15 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
- * One request and its answer. Created on a Netty I/O thread; may be answered from any thread (Netty hands the
- * write to the channel's event loop). Fault injection hooks in here: added latency and malformed bodies.
+ * One request and its answer. Created on a Netty I/O thread; may be answered from any thread: the answer is handed to
+ * the connection's event loop, where the {@link Connection} writes it and reads the next request. Fault injection
+ * hooks in here: added latency and malformed bodies. A HEAD request gets the headers of the GET answer, no body.
  */
 final class Exchange {
     private static final AsciiString APPLICATION_JSON = AsciiString.cached("application/json");
 
     private final ChannelHandlerContext ctx;
+    private final Connection connection;
     private final HttpMethod method;
     private final String path;
     private final byte[] body;
@@ -33,9 +34,10 @@ final class Exchange {
     private int delayMs;
     private boolean malformed;
 
-    Exchange(ChannelHandlerContext ctx, HttpMethod method, String path, byte[] body, boolean keepAlive,
-             HttpVersion version) {
+    Exchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
+             boolean keepAlive, HttpVersion version) {
         this.ctx = ctx;
+        this.connection = connection;
         this.method = method;
         this.path = path;
         this.body = body;
@@ -87,17 +89,14 @@ final class Exchange {
 
     /** Closes the connection without an answer (fault: dropped connection). */
     void drop() {
-        if (delayMs > 0) {
-            ctx.executor().schedule(() -> ctx.close(), delayMs, TimeUnit.MILLISECONDS);
-        } else {
-            ctx.close();
-        }
+        onEventLoop(delayMs, connection::drop);
     }
 
     private void send(int status, byte[] json, String allow) {
         byte[] content = malformed ? truncate(json) : json;
+        boolean head = method.equals(HttpMethod.HEAD);
         FullHttpResponse response = new DefaultFullHttpResponse(version, HttpResponseStatus.valueOf(status),
-                Unpooled.wrappedBuffer(content));
+                head ? Unpooled.EMPTY_BUFFER : Unpooled.wrappedBuffer(content));
         response.headers()
                 .set(HttpHeaderNames.CONTENT_TYPE, APPLICATION_JSON)
                 .setInt(HttpHeaderNames.CONTENT_LENGTH, content.length);
@@ -109,18 +108,16 @@ final class Exchange {
         } else if (!keepAlive) {
             response.headers().set(HttpHeaderNames.CONNECTION, HttpHeaderValues.CLOSE);
         }
-        if (delayMs > 0) {
-            ctx.executor().schedule(() -> write(response), delayMs, TimeUnit.MILLISECONDS);
-        } else {
-            write(response);
-        }
+        onEventLoop(delayMs, () -> connection.answer(response, keepAlive));
     }
 
-    private void write(FullHttpResponse response) {
-        if (keepAlive) {
-            ctx.writeAndFlush(response, ctx.voidPromise());
+    private void onEventLoop(int delay, Runnable task) {
+        if (delay > 0) {
+            ctx.executor().schedule(task, delay, TimeUnit.MILLISECONDS);
+        } else if (ctx.executor().inEventLoop()) {
+            task.run();
         } else {
-            ctx.writeAndFlush(response).addListener(ChannelFutureListener.CLOSE);
+            ctx.executor().execute(task);
         }
     }
 

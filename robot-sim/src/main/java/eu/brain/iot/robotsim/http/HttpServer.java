@@ -1,5 +1,6 @@
 package eu.brain.iot.robotsim.http;
 
+import eu.brain.iot.robotsim.SimConfig;
 import eu.brain.iot.robotsim.WorldThread;
 import eu.brain.iot.robotsim.fault.FaultTable;
 import eu.brain.iot.robotsim.view.ViewPublisher;
@@ -11,22 +12,27 @@ import io.netty.channel.EventLoopGroup;
 import io.netty.channel.nio.NioEventLoopGroup;
 import io.netty.channel.socket.SocketChannel;
 import io.netty.channel.socket.nio.NioServerSocketChannel;
-import io.netty.handler.codec.http.HttpObjectAggregator;
 import io.netty.handler.codec.http.HttpServerCodec;
+import io.netty.handler.flow.FlowControlHandler;
 import io.netty.util.concurrent.DefaultThreadFactory;
 import java.io.IOException;
 import java.net.InetSocketAddress;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.function.ToIntFunction;
 
 /**
  * The simulator's HTTP/1.1 server (Netty, keep-alive, one port for the whole fleet). I/O threads answer state polls
- * from pre-serialized views and hand orders to the world thread.
+ * from pre-serialized views and hand orders to the world thread. Each connection answers its requests one after the
+ * other, in order ({@link Connection}); a request must pass the {@link RequestGate} first.
  */
 public final class HttpServer implements AutoCloseable {
-    private static final int MAX_BODY = 64 * 1024;
+    static final int MAX_BODY = 64 * 1024;
+    static final int MAX_LINE = 4096;
+    static final int MAX_HEADERS = 8192;
 
     private final EventLoopGroup boss;
     private final EventLoopGroup workers;
@@ -35,6 +41,16 @@ public final class HttpServer implements AutoCloseable {
     /** What the server serves; ids map to indices of the world's robots and doors. */
     public record Wiring(WorldThread world, ViewPublisher views, FaultTable faults, Map<String, Integer> robots,
                          Map<String, Integer> doors, List<String> robotIds, Map<String, Object> index) {
+    }
+
+    /**
+     * What the server accepts.
+     *
+     * @param allowedHosts         host names accepted in {@code Host} and {@code Origin} besides 127.0.0.1,
+     *                             localhost, [::1] and the bind address
+     * @param requestTimeoutMillis time a request may take to arrive whole once its first bytes came
+     */
+    public record Limits(Set<String> allowedHosts, long requestTimeoutMillis) {
     }
 
     private HttpServer(EventLoopGroup boss, EventLoopGroup workers, Channel channel) {
@@ -49,12 +65,15 @@ public final class HttpServer implements AutoCloseable {
      * @param ioThreads I/O threads, 0 for one per core
      * @throws IOException when the address cannot be bound (for example the port is taken)
      */
-    public static HttpServer start(String bindAddress, int port, int ioThreads, Wiring w) throws IOException {
+    public static HttpServer start(String bindAddress, int port, int ioThreads, Limits limits, Wiring w)
+            throws IOException {
         ToIntFunction<String> robotIndex = id -> w.robots().getOrDefault(id, -1);
         Router router = new Router(w.robots(), w.doors(), new RobotApi(w.world(), w.views(), w.faults()),
                 new DoorApi(w.world(), w.views()), new AdminApi(w.world(), w.faults(), w.robotIds(), robotIndex),
                 new WorldApi(w.world(), w.index()));
-        RequestHandler handler = new RequestHandler(router);
+        Set<String> hosts = new HashSet<>(limits.allowedHosts());
+        hosts.addAll(List.of("127.0.0.1", "localhost", "[::1]", SimConfig.hostName(bindAddress)));
+        RequestGate gate = new RequestGate(hosts);
         int threads = ioThreads > 0 ? ioThreads : Runtime.getRuntime().availableProcessors();
         EventLoopGroup boss = new NioEventLoopGroup(1, new DefaultThreadFactory("robot-sim-accept", true));
         EventLoopGroup workers = new NioEventLoopGroup(threads, new DefaultThreadFactory("robot-sim-io", true));
@@ -63,13 +82,16 @@ public final class HttpServer implements AutoCloseable {
                 .channel(NioServerSocketChannel.class)
                 .option(ChannelOption.SO_BACKLOG, 4096)
                 .childOption(ChannelOption.TCP_NODELAY, true)
+                .childOption(ChannelOption.AUTO_READ, false) // a connection reads its next request when it answered
                 .childHandler(new ChannelInitializer<SocketChannel>() {
                     @Override
                     protected void initChannel(SocketChannel ch) {
+                        Connection connection = new Connection(router, gate, MAX_BODY, limits.requestTimeoutMillis());
                         ch.pipeline()
-                                .addLast(new HttpServerCodec())
-                                .addLast(new HttpObjectAggregator(MAX_BODY))
-                                .addLast(handler);
+                                .addLast(connection.bytesWatch())
+                                .addLast(new HttpServerCodec(MAX_LINE, MAX_HEADERS, 8192))
+                                .addLast(new FlowControlHandler())
+                                .addLast(connection);
                     }
                 });
         try {

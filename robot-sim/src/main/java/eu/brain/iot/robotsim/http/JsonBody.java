@@ -1,15 +1,18 @@
 package eu.brain.iot.robotsim.http;
 
-import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.node.ObjectNode;
 import eu.brain.iot.robotsim.view.Json;
-import java.io.IOException;
 import java.util.Iterator;
 import java.util.Set;
 
-/** Reads small JSON request bodies strictly: a wrong type or unknown field is a 400 that names the field. */
+/**
+ * Reads small JSON request bodies strictly: a wrong type, an unknown or repeated field is a 400 that names the field.
+ */
 final class JsonBody {
+    /** Bodies are flat objects; a little room for a nested value that is then refused by type. */
+    static final int MAX_DEPTH = 16;
+
     private final ObjectNode node;
 
     private JsonBody(ObjectNode node) {
@@ -18,23 +21,15 @@ final class JsonBody {
 
     /**
      * Parses a body that must be a JSON object; an empty body counts as {@code {}}. Fields outside
-     * {@code allowed} are refused.
+     * {@code allowed} are refused, and so are a key given twice and nesting deeper than {@link #MAX_DEPTH}.
      */
     static JsonBody parse(byte[] body, Set<String> allowed) throws ApiException {
         ObjectNode object;
         if (body.length == 0 || Exchange.utf8(body).isBlank()) {
             object = Json.MAPPER.createObjectNode();
         } else {
-            JsonNode tree;
-            try {
-                tree = Json.MAPPER.readTree(body);
-            } catch (JsonProcessingException e) {
-                throw new ApiException(400, "body", "malformed JSON at line " + e.getLocation().getLineNr()
-                        + ", column " + e.getLocation().getColumnNr() + ": " + e.getOriginalMessage());
-            } catch (IOException e) {
-                throw new ApiException(400, "body", "unreadable body: " + e.getMessage());
-            }
-            if (tree == null || !tree.isObject()) {
+            JsonNode tree = StrictJsonReader.read(body, MAX_DEPTH);
+            if (!tree.isObject()) {
                 throw new ApiException(400, "body", "the body must be a JSON object");
             }
             object = (ObjectNode) tree;

@@ -30,7 +30,11 @@ final class Replies {
         if (cause instanceof ApiException api) {
             ex.error(api);
         } else if (cause instanceof CommandRejectedException rejected) {
-            int status = rejected.kind() == CommandRejectedException.Kind.NOT_FOUND ? 404 : 422;
+            int status = switch (rejected.kind()) {
+                case NOT_FOUND -> 404;
+                case UNPROCESSABLE -> 422;
+                case LIMIT -> 429;
+            };
             ex.error(status, rejected.field(), rejected.getMessage(), null);
         } else {
             System.err.println("robot-sim: request " + ex.method() + " " + ex.path() + " failed: " + cause);

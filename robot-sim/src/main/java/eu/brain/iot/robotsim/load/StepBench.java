@@ -140,23 +140,23 @@ public final class StepBench {
                 continue;
             }
             Terrain here = map.terrain(r.x(), r.y());
-            if (r.carried() < 0 && world.cartAt(r.x(), r.y()) >= 0) {
-                commands.pick(i);
-            } else if (r.carried() >= 0 && here == Terrain.STORAGE) {
-                commands.place(i);
-            } else {
-                Terrain wanted = r.carried() >= 0 ? Terrain.STORAGE : Terrain.UNLOAD;
-                int x;
-                int y;
-                do {
-                    x = random.nextInt(map.width());
-                    y = random.nextInt(map.height());
-                } while (map.terrain(x, y) != wanted);
-                try {
+            try { // the bench's Commands have no queue bound and goals are never walls: nothing is refused
+                if (r.carried() < 0 && world.cartAt(r.x(), r.y()) >= 0) {
+                    commands.pick(i);
+                } else if (r.carried() >= 0 && here == Terrain.STORAGE) {
+                    commands.place(i);
+                } else {
+                    Terrain wanted = r.carried() >= 0 ? Terrain.STORAGE : Terrain.UNLOAD;
+                    int x;
+                    int y;
+                    do {
+                        x = random.nextInt(map.width());
+                        y = random.nextInt(map.height());
+                    } while (map.terrain(x, y) != wanted);
                     commands.goTo(i, x, y);
-                } catch (CommandRejectedException e) {
-                    throw new IllegalStateException(e);
                 }
+            } catch (CommandRejectedException e) {
+                throw new IllegalStateException(e);
             }
         }
     }

@@ -4,8 +4,8 @@ package eu.brain.iot.robotsim.world;
 public final class CommandRejectedException extends Exception {
     private static final long serialVersionUID = 1L;
 
-    /** Why: the HTTP layer maps NOT_FOUND to 404 and UNPROCESSABLE to 422. */
-    public enum Kind { NOT_FOUND, UNPROCESSABLE }
+    /** Why: the HTTP layer maps NOT_FOUND to 404, UNPROCESSABLE to 422 and LIMIT (a full queue) to 429. */
+    public enum Kind { NOT_FOUND, UNPROCESSABLE, LIMIT }
 
     private final Kind kind;
     private final String field;

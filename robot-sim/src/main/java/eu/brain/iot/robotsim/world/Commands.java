@@ -9,10 +9,24 @@ import java.util.List;
  * Owned by the world's owner thread, like the {@link World} itself.
  */
 public final class Commands {
-    private final World world;
+    /** The default bound of one robot's queue of missions (not counting the running one). */
+    public static final int DEFAULT_MAX_QUEUED = 64;
 
+    private final World world;
+    private final int maxQueued;
+
+    /** Commands with no bound on a robot's queue (for benchmarks and tests of the rules). */
     public Commands(World world) {
+        this(world, Integer.MAX_VALUE);
+    }
+
+    /** @param maxQueued missions a robot may have queued (not counting the running one); more are refused */
+    public Commands(World world, int maxQueued) {
+        if (maxQueued < 1) {
+            throw new IllegalArgumentException("maxQueued must be >= 1, was " + maxQueued);
+        }
         this.world = world;
+        this.maxQueued = maxQueued;
     }
 
     /** Queues a GOTO; the goal must be inside the map and not a wall. */
@@ -32,16 +46,23 @@ public final class Commands {
     }
 
     /** Queues a corkscrew pick of the cart under the robot (checked when the mission starts). */
-    public Mission pick(int robot) {
+    public Mission pick(int robot) throws CommandRejectedException {
         return enqueue(robot, MissionType.PICK, -1, -1);
     }
 
     /** Queues putting the carried cart down where the robot stands (checked when the mission starts). */
-    public Mission place(int robot) {
+    public Mission place(int robot) throws CommandRejectedException {
         return enqueue(robot, MissionType.PLACE, -1, -1);
     }
 
-    private Mission enqueue(int robot, MissionType type, int x, int y) {
+    private Mission enqueue(int robot, MissionType type, int x, int y) throws CommandRejectedException {
+        Robot r = world.robots[robot];
+        if (r.queue.size() >= maxQueued) {
+            throw new CommandRejectedException(CommandRejectedException.Kind.LIMIT, null,
+                    r.id() + "'s mission queue is full: " + r.queue.size() + " missions wait (the bound is "
+                            + maxQueued + ", robot-sim's --max-queue): wait until queued missions start, or cancel "
+                            + "some (POST .../" + type.component() + "/cancel)");
+        }
         Mission m = new Mission(world.nextMissionId++, type, x, y);
         world.robots[robot].queue.addLast(m);
         return m;

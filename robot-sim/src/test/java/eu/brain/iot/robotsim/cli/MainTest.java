@@ -44,6 +44,11 @@ class MainTest {
         "--fault robot9:offline=true --port 0 | robot-sim: --fault: fault for unknown robot 'robot9' (the map has 3 robots: robot1..robot3)",
         "--manual-step=yes         | robot-sim: --manual-step takes no value",
         "fly                       | robot-sim: unknown command 'fly'",
+        "--max-queue 0             | robot-sim: --max-queue must be a whole number 1..1000000, found '0'",
+        "--allow-host http://x.example | robot-sim: --allow-host: 'http://x.example' is not a host name (give a name or an address, without scheme, port or path, e.g. robots.example or 192.168.1.20)",
+        "--allow-host x.example:80 | robot-sim: --allow-host: 'x.example:80' is not a host name (give a name or an address, without scheme, port or path, e.g. robots.example or 192.168.1.20)",
+        "--bind 0.0.0.0/8          | robot-sim: --bind: '0.0.0.0/8' is not a host name (give a name or an address, without scheme, port or path, e.g. robots.example or 192.168.1.20)",
+        "--request-timeout-ms 5    | robot-sim: --request-timeout-ms must be a whole number 100..3600000, found '5'",
     })
     void badCommandLinesGiveOneLineAndUsageWithoutStackTrace(String args, String firstLine) {
         assertThat(run(args.split(" "))).isEqualTo(2);
@@ -99,6 +104,19 @@ class MainTest {
         assertThat(c.fleetFaults().latencyMs()).isEqualTo(20);
         assertThat(c.fleetFaults().dropRate()).isEqualTo(0.25);
         assertThat(c.robotFaults().get("robot2").offline()).isTrue();
+        assertThat(c.maxQueuedMissions()).isEqualTo(SimConfig.DEFAULT_MAX_QUEUED_MISSIONS).isEqualTo(64);
+        assertThat(c.requestTimeoutMillis()).isEqualTo(10_000);
+        assertThat(c.allowedHosts()).isEmpty();
+    }
+
+    @Test
+    void hardeningFlagsReachTheConfiguration() throws Exception {
+        SimConfig c = ServeCommand.config(Flags.parse(new String[] {"--max-queue", "5", "--allow-host",
+            "Robots.Example", "--allow-host", "fe80::1", "--request-timeout-ms", "2500"},
+            java.util.Set.of("max-queue", "allow-host", "request-timeout-ms"), java.util.Set.of()));
+        assertThat(c.maxQueuedMissions()).isEqualTo(5);
+        assertThat(c.allowedHosts()).containsExactlyInAnyOrder("robots.example", "[fe80::1]");
+        assertThat(c.requestTimeoutMillis()).isEqualTo(2500);
     }
 
     @Test

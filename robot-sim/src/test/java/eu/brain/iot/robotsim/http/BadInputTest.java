@@ -60,6 +60,63 @@ class BadInputTest {
         assertThat(a.json().get("error").asText()).isNotBlank();
     }
 
+    /** Every endpoint that takes a POST body. */
+    static final String[] POST_ENDPOINTS = {
+        GOTO,
+        "robot1/robot_local_control/NavigationComponent/PickComponent/add",
+        "robot1/robot_local_control/NavigationComponent/PlaceComponent/add",
+        "robot1/robot_local_control/PickComponent/add",
+        "robot1/robot_local_control/NavigationComponent/GoToComponent/cancel",
+        "robot1/robot_local_control/NavigationComponent/PickComponent/cancel",
+        "robot1/robot_local_control/NavigationComponent/PlaceComponent/cancel",
+        "robot1/robot_local_control/NavigationComponent/GoToComponent/query_state",
+        "door1/door_controller/command",
+        "admin/step",
+        "admin/faults",
+        "admin/faults/robot1",
+    };
+
+    static String deepJson(int depth) {
+        return "{\"x\":" + "[".repeat(depth) + "]".repeat(depth) + ",\"y\":1}";
+    }
+
+    @Test
+    void deeplyNestedJsonIsA400OnEveryPostEndpoint() throws Exception {
+        for (String deep : new String[] {deepJson(5000), deepJson(17), "[".repeat(5000) + "]".repeat(5000),
+                "{\"a\":".repeat(3000) + "1" + "}".repeat(3000)}) {
+            for (String path : POST_ENDPOINTS) {
+                Client.Answer a = client.post(path, deep);
+                assertThat(a.status()).as(path).isEqualTo(400);
+                assertThat(a.json().get("field").asText()).as(path).isEqualTo("body");
+                assertThat(a.json().get("error").asText()).as(path)
+                        .startsWith("JSON nesting depth exceeds 16 at line 1, column ");
+            }
+        }
+    }
+
+    @ParameterizedTest(name = "{0} {1} -> 400 naming {2}")
+    @CsvSource(delimiter = '|', value = {
+        GOTO + "                          | {\"x\":9,\"y\":7,\"x\":1}          | x",
+        "door1/door_controller/command    | {\"data\":0.0,\"data\":1.0}         | data",
+        "admin/step                       | {\"steps\":1,\"steps\":100}         | steps",
+        "admin/faults                     | {\"errorRate\":0,\"errorRate\":1}   | errorRate",
+        "admin/faults/robot1              | {\"offline\":false,\"offline\":true} | offline",
+        "robot1/robot_local_control/NavigationComponent/GoToComponent/cancel | {\"id\":1,\"id\":2} | id",
+    })
+    void aKeyGivenTwiceIsRefusedNamingIt(String path, String body, String key) throws Exception {
+        Client.Answer a = client.post(path, body);
+        assertThat(a.status()).isEqualTo(400);
+        assertThat(a.json().get("field").asText()).isEqualTo(key);
+        assertThat(a.json().get("error").asText()).startsWith("field '" + key + "' given twice at line 1, column ");
+    }
+
+    @Test
+    void contentAfterTheDocumentIsRefused() throws Exception {
+        Client.Answer a = client.post(GOTO, "{\"x\":6,\"y\":4} {\"x\":8,\"y\":4}");
+        assertThat(a.status()).isEqualTo(400);
+        assertThat(a.json().get("error").asText()).startsWith("unexpected '{' after the JSON document");
+    }
+
     @ParameterizedTest(name = "goal ({0},{1}) -> 422 naming {2}")
     @CsvSource({"20,3,x", "-1,3,x", "3,10,y", "3,-5,y", "0,0,x", "9,0,x"})
     void goalOutsideTheMapOrInAWall(int x, int y, String field) throws Exception {
@@ -118,7 +175,7 @@ class BadInputTest {
         JsonNode error = a.json();
         assertThat(error.get("error").asText()).contains("use POST");
         Client.Answer put = client.send(HttpRequest.newBuilder(sim.baseUri().resolve("robot1/robot_local_control/state"))
-                .PUT(HttpRequest.BodyPublishers.ofString("{}")));
+                .header("Content-Type", "application/json").PUT(HttpRequest.BodyPublishers.ofString("{}")));
         assertThat(put.status()).isEqualTo(405);
     }
 

@@ -40,7 +40,7 @@ final class Client {
     }
 
     Answer delete(String path) throws IOException, InterruptedException {
-        return send(HttpRequest.newBuilder(base.resolve(path)).DELETE());
+        return send(HttpRequest.newBuilder(base.resolve(path)).header("Content-Type", "application/json").DELETE());
     }
 
     Answer send(HttpRequest.Builder request) throws IOException, InterruptedException {

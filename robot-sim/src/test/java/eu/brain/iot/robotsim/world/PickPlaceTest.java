@@ -9,7 +9,7 @@ class PickPlaceTest {
     private static final String MAP = "map:\n######\n#RduC#\n#ddss#\n#dduC#\n######\n";
 
     @Test
-    void corkscrewLiftCarriesTheCartToStorageAndPutsItDown() {
+    void corkscrewLiftCarriesTheCartToStorageAndPutsItDown() throws Exception {
         Sim sim = Sim.of(MAP);
         Robot r = sim.robot("robot1");
         Cart cart = sim.cart("cart1");
@@ -46,7 +46,7 @@ class PickPlaceTest {
     }
 
     @Test
-    void pickWithoutACartAndPlaceWithoutCarryingFail() {
+    void pickWithoutACartAndPlaceWithoutCarryingFail() throws Exception {
         Sim sim = Sim.of(MAP);
         int r = sim.index("robot1");
         Mission pick = sim.commands.pick(r);
@@ -59,7 +59,7 @@ class PickPlaceTest {
     }
 
     @Test
-    void secondPickAndPlaceOnACartFail() {
+    void secondPickAndPlaceOnACartFail() throws Exception {
         Sim sim = Sim.of(MAP);
         int r = sim.index("robot1");
         sim.goTo("robot1", 4, 1);
@@ -76,7 +76,7 @@ class PickPlaceTest {
     }
 
     @Test
-    void unloadedRobotDrivesUnderCartsButALoadedOneGoesAround() {
+    void unloadedRobotDrivesUnderCartsButALoadedOneGoesAround() throws Exception {
         Sim sim = Sim.of("map:\n#######\n#RCuuC#\n#uuuuu#\n#######\n");
         Robot r = sim.robot("robot1");
         sim.goTo("robot1", 5, 1);
@@ -112,7 +112,7 @@ class PickPlaceTest {
     }
 
     @Test
-    void placeInADoorwayOrOnAnotherCartFails() {
+    void placeInADoorwayOrOnAnotherCartFails() throws Exception {
         Sim sim = Sim.of("door-open-steps: 0\nmap:\n#####\n#RC##\n##D##\n#uCu#\n#####\n");
         int r = sim.index("robot1");
         sim.commands.door(0, true);
