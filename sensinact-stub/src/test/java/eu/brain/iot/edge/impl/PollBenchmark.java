@@ -266,7 +266,8 @@ public final class PollBenchmark {
                         + "/robot_local_control/NavigationComponent/GoToComponent/add");
                 String goal = "{\"x\":" + lane[0] + ",\"y\":" + (leg % 2 == 0 ? lane[2] : lane[1]) + "}";
                 inFlight.acquire();
-                pending.add(http.sendAsync(HttpRequest.newBuilder(add).POST(HttpRequest.BodyPublishers.ofString(goal))
+                pending.add(http.sendAsync(HttpRequest.newBuilder(add).header("Content-Type", "application/json")
+                        .POST(HttpRequest.BodyPublishers.ofString(goal))
                         .build(), HttpResponse.BodyHandlers.ofString()).whenComplete((a, error) -> {
                             inFlight.release();
                             if (error != null || a.statusCode() != 200) {

@@ -18,11 +18,13 @@ final class SimAdmin {
 
     static void fault(RobotSim sim, String robot, String json) {
         send(HttpRequest.newBuilder(sim.baseUri().resolve("admin/faults/" + robot))
+                .header("Content-Type", "application/json")
                 .POST(HttpRequest.BodyPublishers.ofString(json)).build());
     }
 
     static void clear(RobotSim sim, String robot) {
-        send(HttpRequest.newBuilder(sim.baseUri().resolve("admin/faults/" + robot)).DELETE().build());
+        send(HttpRequest.newBuilder(sim.baseUri().resolve("admin/faults/" + robot))
+                .header("Content-Type", "application/json").DELETE().build());
     }
 
     private static void send(HttpRequest request) {
