@@ -55,6 +55,10 @@ public final class Checker {
                 if (t != null && !scope.assignable(t, v)) {
                     diagnostics.error(c.value().pos(), "constant " + c.name() + " of type " + t
                             + " cannot hold a value of type " + v);
+                } else if (t != null && v != Type.ERROR && ConstantFolder.fold(c.value(), scope) == null) {
+                    diagnostics.error(c.value().pos(), "the value of constant " + c.name() + " cannot be computed "
+                            + "when the model is compiled: write it with literals, operators and other constants "
+                            + "(no function call, no cycle, no integer division by zero)");
                 }
             } else if (d instanceof ExternType t) {
                 t.refines().forEach(r -> {

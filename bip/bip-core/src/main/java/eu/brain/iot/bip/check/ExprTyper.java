@@ -45,7 +45,10 @@ public final class ExprTyper {
             if (target == null) {
                 return;
             }
-            if (!target.assignable()) {
+            if (target.constant()) {
+                diagnostics.error(a.pos(), "cannot assign to " + a.target().text() + ": its port type declares "
+                        + target.name().substring(target.name().indexOf('.') + 1) + " 'const' (read-only)");
+            } else if (!target.assignable()) {
                 diagnostics.error(a.pos(), "cannot assign to " + a.target().text() + ": it is a "
                         + target.kind().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ')
                         + ", which is read-only");

@@ -110,7 +110,8 @@ public final class Parser {
             return false;
         }
         return switch (t.text()) {
-            case "const", "extern" -> true;
+            case "const" -> !in.peek(ahead + 1).is(Kind.IDENT) || in.peek(ahead + 1).isWord("data");
+            case "extern" -> !in.peek(ahead + 1).isWord("port");
             case "port", "atom", "atomic", "connector", "compound" -> in.peek(ahead + 1).isWord("type");
             default -> false;
         };
@@ -222,6 +223,7 @@ public final class Parser {
                 if (atDeclarationStart(0)) {
                     throw in.fail("expected a parameter type of " + owner + ", found " + in.peek().describe());
                 }
+                boolean constant = in.acceptWord("const");
                 TypeRef type = type("a parameter type of " + owner);
                 String name = null;
                 if (in.at(Kind.IDENT)) {
@@ -230,7 +232,7 @@ public final class Parser {
                     throw in.fail("expected a parameter name after type " + type.name() + " of " + owner + ", found "
                             + in.peek().describe());
                 }
-                params.add(new Param(pos, type, name));
+                params.add(new Param(pos, type, name, constant));
             } while (in.accept(Kind.COMMA));
         }
         in.expect(Kind.RPAREN, "to close the parameters of " + owner + " opened at " + open.line() + ":"
