@@ -184,7 +184,13 @@ public final class ExprTyper {
             return mismatch(b, "'" + op.symbol + "' needs two ints", l.kind() == Type.Kind.INT ? r : l);
         }
         if (l.numeric() && r.numeric()) {
-            return l.kind() == Type.Kind.INT && r.kind() == Type.Kind.INT ? Type.INT : Type.FLOAT;
+            boolean integral = l.kind() == Type.Kind.INT && r.kind() == Type.Kind.INT;
+            if (integral && (op == BinaryOp.DIV || op == BinaryOp.MOD)
+                    && Integer.valueOf(0).equals(ConstantFolder.fold(b.right(), scope))) {
+                diagnostics.error(b.right().pos(), "integer " + (op == BinaryOp.DIV ? "division" : "remainder")
+                        + " by zero: the divisor is always 0, so this always fails when it runs");
+            }
+            return integral ? Type.INT : Type.FLOAT;
         }
         return mismatch(b, "'" + op.symbol + "' needs two numbers", l.numeric() ? r : l);
     }

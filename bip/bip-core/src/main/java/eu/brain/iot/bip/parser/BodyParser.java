@@ -375,16 +375,22 @@ final class BodyParser {
                     } while (in.accept(Kind.COMMA));
                 } else if (in.acceptWord("connector")) {
                     String type = in.qualifiedName("a connector type after 'connector'");
-                    String instance = in.ident("a connector name after type " + type);
-                    in.expect(Kind.LPAREN, "after connector " + instance + " (its ports, e.g. (A.p, B.q))");
-                    List<PortRef> ports = new ArrayList<>();
-                    if (!in.at(Kind.RPAREN)) {
-                        do {
-                            ports.add(portRef("a port 'component.port' of connector " + instance));
-                        } while (in.accept(Kind.COMMA));
-                    }
-                    in.expect(Kind.RPAREN, "to close the ports of connector " + instance);
-                    connectors.add(new CompoundType.Connector(itemPos, itemAnnotations, type, instance, ports));
+                    boolean first = true;
+                    do {
+                        // BIP2 declares several connectors of one type at once: connector T c1(A.p), c2(B.q)
+                        Pos namePos = first ? itemPos : in.pos();
+                        first = false;
+                        String instance = in.ident("a connector name after type " + type);
+                        in.expect(Kind.LPAREN, "after connector " + instance + " (its ports, e.g. (A.p, B.q))");
+                        List<PortRef> ports = new ArrayList<>();
+                        if (!in.at(Kind.RPAREN)) {
+                            do {
+                                ports.add(portRef("a port 'component.port' of connector " + instance));
+                            } while (in.accept(Kind.COMMA));
+                        }
+                        in.expect(Kind.RPAREN, "to close the ports of connector " + instance);
+                        connectors.add(new CompoundType.Connector(namePos, itemAnnotations, type, instance, ports));
+                    } while (in.accept(Kind.COMMA));
                 } else if (in.acceptWord("priority")) {
                     priorities.add(compoundPriority(itemPos));
                 } else if (in.acceptWord("export")) {
