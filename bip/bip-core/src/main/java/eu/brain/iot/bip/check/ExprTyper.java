@@ -139,12 +139,10 @@ public final class ExprTyper {
             return b.op().comparison() || b.op().logical() ? Type.BOOL : Type.ERROR;
         }
         if (l.kind() == Type.Kind.EXTERN || r.kind() == Type.Kind.EXTERN) {
-            for (ExternOperator op : scope.operators(b.op().symbol)) {
-                if (op.params().size() == 2 && scope.assignable(scope.resolveType(op.params().get(0).name()), l)
-                        && scope.assignable(scope.resolveType(op.params().get(1).name()), r)) {
-                    Type result = scope.resolveType(op.returnType().name());
-                    return result == null ? Type.ERROR : result;
-                }
+            ExternOperator op = externOperator(b.op(), l, r);
+            if (op != null) {
+                Type result = scope.resolveType(op.returnType().name());
+                return result == null ? Type.ERROR : result;
             }
             if ((b.op() == BinaryOp.EQ || b.op() == BinaryOp.NE) && l.equals(r)) {
                 return Type.BOOL;
@@ -193,6 +191,38 @@ public final class ExprTyper {
             return integral ? Type.INT : Type.FLOAT;
         }
         return mismatch(b, "'" + op.symbol + "' needs two numbers", l.numeric() ? r : l);
+    }
+
+    private ExternOperator externOperator(BinaryOp symbol, Type l, Type r) {
+        for (ExternOperator op : scope.operators(symbol.symbol)) {
+            if (op.params().size() == 2 && scope.assignable(scope.resolveType(op.params().get(0).name()), l)
+                    && scope.assignable(scope.resolveType(op.params().get(1).name()), r)) {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * @return the extern operator a binary expression on extern types calls, as a call of the extern function
+     *         {@code operatorAdd}, {@code operatorEq}, ... (the name the generated interface and the interpreter's
+     *         {@code ExternFunctions} use), or null when the operator is the language's own
+     */
+    public ResolvedCall operator(Expr.Binary b, Names names) {
+        Type l = type(b.left(), names);
+        Type r = type(b.right(), names);
+        if (l.kind() != Type.Kind.EXTERN && r.kind() != Type.Kind.EXTERN) {
+            return null;
+        }
+        ExternOperator op = externOperator(b.op(), l, r);
+        if (op == null) {
+            return null;
+        }
+        String name = b.op().name().toLowerCase(java.util.Locale.ROOT).replace("_", "");
+        Type result = scope.resolveType(op.returnType().name());
+        return new ResolvedCall("operator" + Character.toUpperCase(name.charAt(0)) + name.substring(1),
+                List.of(scope.resolveType(op.params().get(0).name()), scope.resolveType(op.params().get(1).name())),
+                result == null ? Type.ERROR : result, null);
     }
 
     /** Resolves a call; {@code statement} tells whether its result is unused (then a void function is fine). */

@@ -34,6 +34,7 @@ class CallCollector {
             }
         }
         atom.priorities().forEach(p -> expr(p.guard()));
+        atom.invariants().forEach(i -> expr(i.condition()));
     }
 
     void var(Expr.Var v) {
@@ -68,6 +69,10 @@ class CallCollector {
         } else if (e instanceof Expr.Binary b) {
             expr(b.left());
             expr(b.right());
+            ResolvedCall op = typer.operator(b, names);
+            if (op != null) {
+                calls.add(op);
+            }
         }
     }
 

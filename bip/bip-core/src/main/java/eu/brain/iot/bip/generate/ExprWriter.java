@@ -86,6 +86,10 @@ final class ExprWriter {
             return "(" + u.op().symbol + expr(u.operand()) + ")";
         }
         Expr.Binary b = (Expr.Binary) e;
+        ResolvedCall op = typer.operator(b, names);
+        if (op != null) {
+            return mapper.call(op, List.of(expr(b.left()), expr(b.right())));
+        }
         if (b.op() == Expr.BinaryOp.EQ || b.op() == Expr.BinaryOp.NE) {
             Type l = typer.type(b.left(), names);
             Type r = typer.type(b.right(), names);

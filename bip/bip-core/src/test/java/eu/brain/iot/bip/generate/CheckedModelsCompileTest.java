@@ -11,6 +11,8 @@ import java.util.Random;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.ValueSource;
 
 import eu.brain.iot.bip.Models;
 import eu.brain.iot.bip.Mutants;
@@ -81,6 +83,16 @@ class CheckedModelsCompileTest {
                 .orElseThrow().source();
         assertThat(behaviour).contains("replaySample", "policy error", "checkInvariants").doesNotContain(
                 "replayReset");
+        InMemoryCompiler.compile(files, out);
+    }
+
+    @ParameterizedTest
+    @ValueSource(strings = {"Ext", "Real"})
+    void modelsInTheStyleOfVerimagExamplesCompile(String name) {
+        Toolchain tool = Models.check(name + ".bip", Models.resource("models/" + name + ".bip"));
+        assertThat(tool.diagnostics().errors()).isEmpty();
+        List<JavaFile> files = tool.generateInMemory(null);
+        assertThat(tool.diagnostics().errors()).isEmpty();
         InMemoryCompiler.compile(files, out);
     }
 
