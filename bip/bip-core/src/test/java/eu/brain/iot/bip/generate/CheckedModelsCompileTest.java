@@ -86,6 +86,75 @@ class CheckedModelsCompileTest {
         InMemoryCompiler.compile(files, out);
     }
 
+    /**
+     * The generated behaviour applies an extern port's policy: an event the port cannot take now is remembered and
+     * taken (with its data) once the port is enabled, and the behaviour goes on after an event its policy refuses
+     * and after an invariant is violated.
+     */
+    @Test
+    void externPortPoliciesOnTheBus() throws Exception {
+        Toolchain tool = Models.check("Later.bip", Models.resource("golden/bip2.bip"), "Solo.bip", """
+                package Solo
+                  use Later
+                  compound type Top()
+                    component Later.Sensor s1(1), s2(2)
+                  end
+                end
+                """);
+        List<JavaFile> files = tool.generateInMemory("Solo.Top");
+        assertThat(tool.diagnostics().errors()).isEmpty();
+        ClassLoader loader = InMemoryCompiler.compile(files, out);
+        Class<?> externs = loader.loadClass("later.SensorExterns");
+        List<Object> published = new java.util.ArrayList<>();
+        Object bus = java.lang.reflect.Proxy.newProxyInstance(loader,
+                new Class<?>[] {eu.brain.iot.eventing.api.EventBus.class}, (proxy, method, args) -> {
+                    published.add(args[0]);
+                    return null;
+                });
+        Object impl = java.lang.reflect.Proxy.newProxyInstance(loader, new Class<?>[] {externs},
+                (proxy, method, args) -> method.getName().equals("clamp") ? args[0] : null);
+        Object behaviour = loader.loadClass("later.SensorBehaviour").getConstructors()[0].newInstance(bus, impl,
+                Map.of());
+        java.lang.reflect.Method notify = behaviour.getClass().getMethod("notify",
+                eu.brain.iot.eventing.api.BrainIoTEvent.class);
+        java.lang.reflect.Method places = behaviour.getClass().getMethod("placesOf", String.class);
+        java.lang.reflect.Method data = behaviour.getClass().getMethod("dataOf", String.class);
+
+        notify.invoke(behaviour, event(loader, "solo.SensorReset", "s1", Map.of()));
+        assertThat(places.invoke(behaviour, "s1")).as("reset (ignore) at IDLE").isEqualTo(List.of("IDLE"));
+        notify.invoke(behaviour, event(loader, "solo.SensorSample", "s1", Map.of("value", 5, "at", 1.0)));
+        assertThat(places.invoke(behaviour, "s1")).isEqualTo(List.of("MEASURED"));
+        notify.invoke(behaviour, event(loader, "solo.SensorSample", "s1", Map.of("value", 100, "at", 2.0)));
+        assertThat(places.invoke(behaviour, "s1")).as("the second sample is remembered").isEqualTo(
+                List.of("MEASURED"));
+        notify.invoke(behaviour, event(loader, "solo.SensorFault", "s1", Map.of()));
+        assertThat(places.invoke(behaviour, "s1")).as("fault (error) refused at MEASURED").isEqualTo(
+                List.of("MEASURED"));
+        notify.invoke(behaviour, event(loader, "solo.SensorOut", "s1", Map.of()));
+        // out: MEASURED -> SENT, internal SENT -> IDLE, then the remembered sample: IDLE -> MEASURED
+        assertThat(places.invoke(behaviour, "s1")).isEqualTo(List.of("MEASURED"));
+        @SuppressWarnings("unchecked")
+        Map<String, Object> s1 = (Map<String, Object>) data.invoke(behaviour, "s1");
+        assertThat(s1).containsEntry("level", 100).containsEntry("count", 100).containsEntry("when", 2.0);
+        assertThat(places.invoke(behaviour, "s2")).isEqualTo(List.of("IDLE"));
+        Class<?> sensor = loader.loadClass("later.Sensor");
+        Object atom = sensor.getConstructors()[0].newInstance(impl, 1);
+        Field level = sensor.getDeclaredField(AtomWriter.field("count"));
+        level.setAccessible(true);
+        level.set(atom, 100);
+        assertThat(sensor.getMethod("violatedInvariants").invoke(atom)).isEqualTo(List.of("bounded", "idleSmall"));
+    }
+
+    private static Object event(ClassLoader loader, String type, String component, Map<String, Object> values)
+            throws ReflectiveOperationException {
+        Object e = loader.loadClass(type).getConstructor().newInstance();
+        e.getClass().getField("component").set(e, component);
+        for (Map.Entry<String, Object> v : values.entrySet()) {
+            e.getClass().getField(v.getKey()).set(e, v.getValue());
+        }
+        return e;
+    }
+
     @ParameterizedTest
     @ValueSource(strings = {"Ext", "Real"})
     void modelsInTheStyleOfVerimagExamplesCompile(String name) {
