@@ -120,6 +120,15 @@ public final class ExprTyper {
         if (t.isError()) {
             return t;
         }
+        if (t.kind() == Type.Kind.EXTERN) {
+            ExternOperator op = externOperator(u.op().symbol, t);
+            if (op == null) {
+                return mismatch(u, "no operator '" + u.op().symbol + "' for " + t
+                        + " (declare one with 'extern operator')", t);
+            }
+            Type result = scope.resolveType(op.returnType().name());
+            return result == null ? Type.ERROR : result;
+        }
         return switch (u.op()) {
             case NOT -> t.kind() == Type.Kind.BOOL ? Type.BOOL : mismatch(u, "'!' needs a bool", t);
             case NEG, PLUS -> t.numeric() ? t : mismatch(u, "'" + u.op().symbol + "' needs a number", t);
@@ -203,6 +212,35 @@ public final class ExprTyper {
         return null;
     }
 
+    private ExternOperator externOperator(String symbol, Type operand) {
+        for (ExternOperator op : scope.operators(symbol)) {
+            if (op.params().size() == 1 && scope.assignable(scope.resolveType(op.params().get(0).name()), operand)) {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * @return the extern operator a unary expression on an extern type calls, as a call of {@code operatorNeg},
+     *         {@code operatorNot}, ... (see {@link #operator(Expr.Binary, Names)}), or null
+     */
+    public ResolvedCall operator(Expr.Unary u, Names names) {
+        Type t = type(u.operand(), names);
+        ExternOperator op = t.kind() == Type.Kind.EXTERN ? externOperator(u.op().symbol, t) : null;
+        if (op == null) {
+            return null;
+        }
+        Type result = scope.resolveType(op.returnType().name());
+        return new ResolvedCall(operatorName(u.op().name()), List.of(scope.resolveType(op.params().get(0).name())),
+                result == null ? Type.ERROR : result, null);
+    }
+
+    private static String operatorName(String enumName) {
+        String name = enumName.toLowerCase(java.util.Locale.ROOT).replace("_", "");
+        return "operator" + Character.toUpperCase(name.charAt(0)) + name.substring(1);
+    }
+
     /**
      * @return the extern operator a binary expression on extern types calls, as a call of the extern function
      *         {@code operatorAdd}, {@code operatorEq}, ... (the name the generated interface and the interpreter's
@@ -218,9 +256,8 @@ public final class ExprTyper {
         if (op == null) {
             return null;
         }
-        String name = b.op().name().toLowerCase(java.util.Locale.ROOT).replace("_", "");
         Type result = scope.resolveType(op.returnType().name());
-        return new ResolvedCall("operator" + Character.toUpperCase(name.charAt(0)) + name.substring(1),
+        return new ResolvedCall(operatorName(b.op().name()),
                 List.of(scope.resolveType(op.params().get(0).name()), scope.resolveType(op.params().get(1).name())),
                 result == null ? Type.ERROR : result, null);
     }

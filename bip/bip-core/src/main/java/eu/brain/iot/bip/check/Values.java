@@ -8,8 +8,9 @@ import eu.brain.iot.bip.model.Expr.UnaryOp;
 /**
  * The language's value semantics, shared by the checker's constant folding and the interpreter ({@code interp.Ops}
  * delegates here): the operators on run-time values, with exactly the semantics of the Java the generator writes:
- * {@code int} is a 32-bit {@link Integer} that wraps, {@code float}/{@code double} a {@link Double}, mixed arithmetic promotes to
- * double, {@code +} with a string concatenates as Java does, {@code ==} on strings compares contents.
+ * {@code int} is a 32-bit {@link Integer} that wraps, {@code float}/{@code double} a {@link Double}, mixed
+ * arithmetic promotes to double, {@code +} with a string concatenates as Java does, {@code ==} on strings compares
+ * contents.
  */
 public final class Values {
 

@@ -66,6 +66,10 @@ class CallCollector {
             call(c, false);
         } else if (e instanceof Expr.Unary u) {
             expr(u.operand());
+            ResolvedCall op = typer.operator(u, names);
+            if (op != null) {
+                calls.add(op);
+            }
         } else if (e instanceof Expr.Binary b) {
             expr(b.left());
             expr(b.right());

@@ -83,7 +83,9 @@ final class ExprWriter {
         } else if (e instanceof Expr.Call c) {
             return call(c, false);
         } else if (e instanceof Expr.Unary u) {
-            return "(" + u.op().symbol + expr(u.operand()) + ")";
+            ResolvedCall op = typer.operator(u, names);
+            return op != null ? mapper.call(op, List.of(expr(u.operand())))
+                    : "(" + u.op().symbol + expr(u.operand()) + ")";
         }
         Expr.Binary b = (Expr.Binary) e;
         ResolvedCall op = typer.operator(b, names);

@@ -25,6 +25,7 @@ public final class Evaluator {
     private final Map<Expr.Call, ResolvedCall> calls = new IdentityHashMap<>();
     /** Per binary expression: the extern operator it calls, if its operands are of extern types. */
     private final Map<Expr.Binary, Optional<ResolvedCall>> operators = new IdentityHashMap<>();
+    private final Map<Expr.Unary, Optional<ResolvedCall>> unaryOperators = new IdentityHashMap<>();
 
     /** @param typer a typer reporting into a scratch Diagnostics (the model is assumed checked) */
     public Evaluator(ExprTyper typer, Names names) {
@@ -95,6 +96,11 @@ public final class Evaluator {
         } else if (e instanceof Expr.Call c) {
             return call(c, env, false);
         } else if (e instanceof Expr.Unary u) {
+            ResolvedCall op = unaryOperators.computeIfAbsent(u, x -> Optional.ofNullable(typer.operator(x, names)))
+                    .orElse(null);
+            if (op != null) {
+                return Ops.coerce(env.call(op, new Object[] {eval(u.operand(), env)}), op.result());
+            }
             return Ops.unary(u.op(), eval(u.operand(), env));
         }
         Expr.Binary b = (Expr.Binary) e;

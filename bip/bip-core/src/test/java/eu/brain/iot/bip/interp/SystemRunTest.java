@@ -209,4 +209,46 @@ class SystemRunTest {
         assertThat(run.atom("s").violatedInvariants()).containsExactly("belowLimit");
         assertThat(run.candidates()).as("the run goes on").isNotEmpty();
     }
+
+    @Test
+    void externOperatorsCallTheExterns() {
+        List<String> calls = new ArrayList<>();
+        Toolchain tool = Models.check("v.bip", """
+                package Vec
+                  extern data type V
+                  extern function V unit()
+                  extern operator V +(V, V)
+                  extern operator V -(V)
+                  extern operator bool ==(V, V)
+                  port type P()
+                  atom type A()
+                    data V v
+                    data bool same
+                    port P p()
+                    place S
+                    initial to S do { v = unit(); }
+                    on p from S to S do { v = v + -v; same = v == unit(); }
+                  end
+                  compound type C()
+                    component A a()
+                  end
+                end
+                """);
+        assertThat(tool.diagnostics().errors()).isEmpty();
+        SystemModel system = SystemModel.build(tool.workspace(), null, tool.diagnostics()).orElseThrow();
+        SystemRun run = new SystemRun(system, (name, types, result, args) -> {
+            calls.add(name + types + java.util.Arrays.toString(args));
+            return switch (name) {
+                case "unit" -> "u";
+                case "operatorNeg" -> "-" + args[0];
+                case "operatorAdd" -> "(" + args[0] + "+" + args[1] + ")";
+                default -> args[0].equals(args[1]);
+            };
+        });
+        run.step(c -> 0);
+        assertThat(run.atom("a").get("v")).isEqualTo("(u+-u)");
+        assertThat(run.atom("a").get("same")).isEqualTo(false);
+        assertThat(calls).containsExactly("unit[][]", "operatorNeg[V][u]", "operatorAdd[V, V][u, -u]", "unit[][]",
+                "operatorEq[V, V][(u+-u), u]");
+    }
 }
