@@ -132,6 +132,9 @@ final class BodyParser {
                     String invName = in.ident("an invariant name");
                     List<String> at = List.of();
                     if (in.acceptWord("at") || in.acceptWord("from")) {
+                        if (in.atWord("provided")) {
+                            throw in.fail("expected a place name of invariant " + invName + ", found 'provided'");
+                        }
                         at = in.identList("a place name of invariant " + invName);
                     }
                     in.expectWord("provided", "in invariant " + invName + " (write 'invariant " + invName

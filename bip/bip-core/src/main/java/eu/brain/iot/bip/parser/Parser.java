@@ -110,7 +110,7 @@ public final class Parser {
             return false;
         }
         return switch (t.text()) {
-            case "const" -> !in.peek(ahead + 1).is(Kind.IDENT) || in.peek(ahead + 1).isWord("data");
+            case "const" -> in.peek(ahead + 1).isWord("data");
             case "extern" -> !in.peek(ahead + 1).isWord("port");
             case "port", "atom", "atomic", "connector", "compound" -> in.peek(ahead + 1).isWord("type");
             default -> false;
