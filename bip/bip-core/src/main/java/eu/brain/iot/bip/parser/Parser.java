@@ -47,7 +47,9 @@ public final class Parser {
         List<Annotation> annotations = annotationsSafely();
         Pos pos = in.pos();
         if (!in.acceptWord("package")) {
-            in.fail("expected 'package <name>' at the start of the file, found " + in.peek().describe());
+            in.fail("expected 'package <name>' at the start of the file, found " + in.peek().describe()
+                    + (in.atWord("model") ? " (a BIP1 model: this toolchain reads BIP2, where a file is "
+                            + "'package <name> ... end' and the system is a compound type)" : ""));
             while (!in.atEnd() && !in.atWord("package")) {
                 in.next();
             }

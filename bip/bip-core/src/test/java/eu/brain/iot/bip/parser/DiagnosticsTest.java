@@ -130,4 +130,9 @@ class DiagnosticsTest {
                 "m.bip:11:17: error: expected 'provided' in invariant j (write 'invariant j [at P1, P2] provided "
                         + "(condition)'), found 'x'");
     }
+
+    @Test
+    void aBip1ModelIsNamedAsSuch() {
+        assertThat(errors("model M\n  port type P()\nend\n")).first().asString().contains("found 'model' (a BIP1 model");
+    }
 }
