@@ -175,6 +175,10 @@ class CheckerTest {
                     define a b
                     on a b down { b.v = a.v; b.w = a.v; }
                   end
+                  compound type D()
+                    component A a1(), a2()
+                    connector C c(a1.ev, a2.p)
+                  end
                 """)).containsExactly(
                 "p.bip:9:28: error: integer division by zero: the divisor is always 0, so this always fails when it "
                         + "runs",
@@ -185,6 +189,8 @@ class CheckerTest {
                         + "runs",
                 "p.bip:19:5: error: unknown place 'NOWHERE' after 'at' in atom type A; places are [S, U]",
                 "p.bip:20:30: error: the condition of invariant i2 must be a bool, but 'x + 1' is of type int",
-                "p.bip:24:19: error: cannot assign to b.v: its port type declares v 'const' (read-only)");
+                "p.bip:24:19: error: cannot assign to b.v: its port type declares v 'const' (read-only)",
+                "p.bip:28:19: error: connector c binds extern port a1.ev, which only events of the environment fire: "
+                        + "bind an ordinary port");
     }
 }
