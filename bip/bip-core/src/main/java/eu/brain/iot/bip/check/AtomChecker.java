@@ -101,7 +101,7 @@ final class AtomChecker {
             }
         }
         for (AtomType.Invariant i : atom.invariants()) {
-            places(atom, List.of(i.place()), i.pos(), "'at'");
+            places(atom, i.places(), i.pos(), "'at'");
             typer.expectBool(i.condition(), local, "the condition of invariant " + i.name());
         }
         reachability(atom);

@@ -51,10 +51,16 @@ public final class Checker {
         for (Decl d : pkg.decls()) {
             if (d instanceof ConstDecl c) {
                 Type t = nativeType(scope, c.type(), "constant " + c.name());
+                int errorsBefore = diagnostics.errors().size();
                 Type v = typer.type(c.value(), LocalNames.constants(scope));
+                boolean typed = diagnostics.errors().size() == errorsBefore;
                 if (t != null && !scope.assignable(t, v)) {
                     diagnostics.error(c.value().pos(), "constant " + c.name() + " of type " + t
                             + " cannot hold a value of type " + v);
+                } else if (t != null && typed && ConstantFolder.fold(c.value(), scope) == null) {
+                    diagnostics.error(c.value().pos(), "the value of constant " + c.name() + " cannot be computed "
+                            + "when the model is compiled: write it with literals, operators and other constants "
+                            + "(no function call, no cycle, no integer division by zero)");
                 }
             } else if (d instanceof ExternType t) {
                 t.refines().forEach(r -> {

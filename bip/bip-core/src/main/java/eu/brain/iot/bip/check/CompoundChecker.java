@@ -134,6 +134,10 @@ final class CompoundChecker {
         for (int i = 0; i < k.ports().size(); i++) {
             PortRef r = k.ports().get(i);
             PortType actual = portTypeOf(c, r);
+            c.component(r.component()).flatMap(x -> scope.atomType(x.type())).flatMap(a -> a.port(r.port()))
+                    .filter(PortDecl::isExtern).ifPresent(p -> diagnostics.error(r.pos(), "connector " + k.name()
+                            + " binds extern port " + r + ", which only events of the environment fire: bind an "
+                            + "ordinary port"));
             if (i < params.size() && actual != null) {
                 PortType expected = typeScope.portType(params.get(i).type().name()).orElse(null);
                 if (expected != null && expected != actual) {
@@ -162,7 +166,7 @@ final class CompoundChecker {
                                     .filter(PortDecl::exported).map(PortDecl::name).toList());
                     return null;
                 }
-                if (!port.get().exported()) {
+                if (!port.get().exported() && !port.get().isExtern()) { // a bound extern port: its own error
                     diagnostics.error(r.pos(), "port " + r + " is not exported: write 'export port "
                             + port.get().portType() + " " + r.port() + "(...)' in atom type " + atom.get().name());
                 }

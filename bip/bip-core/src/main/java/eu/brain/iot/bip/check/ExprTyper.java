@@ -45,7 +45,10 @@ public final class ExprTyper {
             if (target == null) {
                 return;
             }
-            if (!target.assignable()) {
+            if (target.constant()) {
+                diagnostics.error(a.pos(), "cannot assign to " + a.target().text() + ": its port type declares "
+                        + target.name().substring(target.name().indexOf('.') + 1) + " 'const' (read-only)");
+            } else if (!target.assignable()) {
                 diagnostics.error(a.pos(), "cannot assign to " + a.target().text() + ": it is a "
                         + target.kind().name().toLowerCase(java.util.Locale.ROOT).replace('_', ' ')
                         + ", which is read-only");
@@ -117,6 +120,15 @@ public final class ExprTyper {
         if (t.isError()) {
             return t;
         }
+        if (t.kind() == Type.Kind.EXTERN) {
+            ExternOperator op = externOperator(u.op().symbol, t);
+            if (op == null) {
+                return mismatch(u, "no operator '" + u.op().symbol + "' for " + t
+                        + " (declare one with 'extern operator')", t);
+            }
+            Type result = scope.resolveType(op.returnType().name());
+            return result == null ? Type.ERROR : result;
+        }
         return switch (u.op()) {
             case NOT -> t.kind() == Type.Kind.BOOL ? Type.BOOL : mismatch(u, "'!' needs a bool", t);
             case NEG, PLUS -> t.numeric() ? t : mismatch(u, "'" + u.op().symbol + "' needs a number", t);
@@ -136,12 +148,10 @@ public final class ExprTyper {
             return b.op().comparison() || b.op().logical() ? Type.BOOL : Type.ERROR;
         }
         if (l.kind() == Type.Kind.EXTERN || r.kind() == Type.Kind.EXTERN) {
-            for (ExternOperator op : scope.operators(b.op().symbol)) {
-                if (op.params().size() == 2 && scope.assignable(scope.resolveType(op.params().get(0).name()), l)
-                        && scope.assignable(scope.resolveType(op.params().get(1).name()), r)) {
-                    Type result = scope.resolveType(op.returnType().name());
-                    return result == null ? Type.ERROR : result;
-                }
+            ExternOperator op = externOperator(b.op(), l, r);
+            if (op != null) {
+                Type result = scope.resolveType(op.returnType().name());
+                return result == null ? Type.ERROR : result;
             }
             if ((b.op() == BinaryOp.EQ || b.op() == BinaryOp.NE) && l.equals(r)) {
                 return Type.BOOL;
@@ -181,9 +191,75 @@ public final class ExprTyper {
             return mismatch(b, "'" + op.symbol + "' needs two ints", l.kind() == Type.Kind.INT ? r : l);
         }
         if (l.numeric() && r.numeric()) {
-            return l.kind() == Type.Kind.INT && r.kind() == Type.Kind.INT ? Type.INT : Type.FLOAT;
+            boolean integral = l.kind() == Type.Kind.INT && r.kind() == Type.Kind.INT;
+            if (integral && (op == BinaryOp.DIV || op == BinaryOp.MOD)
+                    && Integer.valueOf(0).equals(ConstantFolder.fold(b.right(), scope))) {
+                diagnostics.error(b.right().pos(), "integer " + (op == BinaryOp.DIV ? "division" : "remainder")
+                        + " by zero: the divisor is always 0, so this always fails when it runs");
+            }
+            return integral ? Type.INT : Type.FLOAT;
         }
         return mismatch(b, "'" + op.symbol + "' needs two numbers", l.numeric() ? r : l);
+    }
+
+    private ExternOperator externOperator(BinaryOp symbol, Type l, Type r) {
+        for (ExternOperator op : scope.operators(symbol.symbol)) {
+            if (op.params().size() == 2 && scope.assignable(scope.resolveType(op.params().get(0).name()), l)
+                    && scope.assignable(scope.resolveType(op.params().get(1).name()), r)) {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    private ExternOperator externOperator(String symbol, Type operand) {
+        for (ExternOperator op : scope.operators(symbol)) {
+            if (op.params().size() == 1 && scope.assignable(scope.resolveType(op.params().get(0).name()), operand)) {
+                return op;
+            }
+        }
+        return null;
+    }
+
+    /**
+     * @return the extern operator a unary expression on an extern type calls, as a call of {@code operatorNeg},
+     *         {@code operatorNot}, ... (see {@link #operator(Expr.Binary, Names)}), or null
+     */
+    public ResolvedCall operator(Expr.Unary u, Names names) {
+        Type t = type(u.operand(), names);
+        ExternOperator op = t.kind() == Type.Kind.EXTERN ? externOperator(u.op().symbol, t) : null;
+        if (op == null) {
+            return null;
+        }
+        Type result = scope.resolveType(op.returnType().name());
+        return new ResolvedCall(operatorName(u.op().name()), List.of(scope.resolveType(op.params().get(0).name())),
+                result == null ? Type.ERROR : result, null);
+    }
+
+    private static String operatorName(String enumName) {
+        String name = enumName.toLowerCase(java.util.Locale.ROOT).replace("_", "");
+        return "operator" + Character.toUpperCase(name.charAt(0)) + name.substring(1);
+    }
+
+    /**
+     * @return the extern operator a binary expression on extern types calls, as a call of the extern function
+     *         {@code operatorAdd}, {@code operatorEq}, ... (the name the generated interface and the interpreter's
+     *         {@code ExternFunctions} use), or null when the operator is the language's own
+     */
+    public ResolvedCall operator(Expr.Binary b, Names names) {
+        Type l = type(b.left(), names);
+        Type r = type(b.right(), names);
+        if (l.kind() != Type.Kind.EXTERN && r.kind() != Type.Kind.EXTERN) {
+            return null;
+        }
+        ExternOperator op = externOperator(b.op(), l, r);
+        if (op == null) {
+            return null;
+        }
+        Type result = scope.resolveType(op.returnType().name());
+        return new ResolvedCall(operatorName(b.op().name()),
+                List.of(scope.resolveType(op.params().get(0).name()), scope.resolveType(op.params().get(1).name())),
+                result == null ? Type.ERROR : result, null);
     }
 
     /** Resolves a call; {@code statement} tells whether its result is unused (then a void function is fine). */

@@ -19,6 +19,11 @@ public record Symbol(Kind kind, String name, Type type, Object decl) {
     }
 
     public boolean assignable() {
-        return kind == Kind.DATA || kind == Kind.CLOCK || kind == Kind.PORT_DATA;
+        return kind == Kind.DATA || kind == Kind.CLOCK || kind == Kind.PORT_DATA && !constant();
+    }
+
+    /** @return whether this is port data its port type declares {@code const} (read-only in connectors) */
+    public boolean constant() {
+        return kind == Kind.PORT_DATA && decl instanceof eu.brain.iot.bip.model.Param p && p.constant();
     }
 }

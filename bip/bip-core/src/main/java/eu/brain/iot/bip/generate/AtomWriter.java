@@ -6,6 +6,7 @@ import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 
+import eu.brain.iot.bip.check.ConstantFolder;
 import eu.brain.iot.bip.check.ExprTyper;
 import eu.brain.iot.bip.check.LocalNames;
 import eu.brain.iot.bip.check.PackageScope;
@@ -135,19 +136,21 @@ final class AtomWriter {
             }
         }.atom(atom);
         for (ConstDecl k : used) {
+            // the folded value, not the initialiser: constants it refers to need no field of their own
             PackageScope owner = new PackageScope(scope.workspace(), scope.owner(k));
-            ExprWriter w = new ExprWriter(new ExprTyper(owner, new eu.brain.iot.bip.diag.Diagnostics()),
-                    LocalNames.constants(owner), new ConstantMapper());
-            c.line("static final " + javaType(k.type().name()) + " " + constant(k.name()) + " = " + w.expr(k.value())
-                    + ";");
+            c.line("static final " + javaType(k.type().name()) + " " + constant(k) + " = "
+                    + JavaNames.value(ConstantFolder.fold(k.value(), owner)) + ";");
         }
         if (!used.isEmpty()) {
             c.blank();
         }
     }
 
-    static String constant(String name) {
-        return "K_" + name.replace('.', '_');
+    /** @return the field of a constant: K_name, or K_package_name for a constant of another package */
+    private String constant(ConstDecl k) {
+        String pkg = scope.owner(k).name();
+        String own = scope.pkg().name();
+        return "K_" + (pkg.equals(own) ? "" : pkg.replace('.', '_') + "_") + k.name();
     }
 
     private String javaType(String bipType) {
@@ -203,6 +206,22 @@ final class AtomWriter {
         c.line("java.util.Map<String, Object> data = new java.util.LinkedHashMap<>();");
         atom.data().forEach(d -> c.line("data.put(" + JavaNames.literal(d.name()) + ", " + field(d.name()) + ");"));
         c.line("return data;").close().blank();
+        c.line("/** @return the invariants that do not hold in the current state (none in a correct run) */");
+        c.open("public java.util.List<String> violatedInvariants()");
+        if (atom.invariants().isEmpty()) {
+            c.line("return java.util.List.of();");
+        } else {
+            c.line("java.util.List<String> violated = new java.util.ArrayList<>();");
+            ExprWriter w = writer();
+            for (AtomType.Invariant inv : atom.invariants()) {
+                String where = inv.places().isEmpty() ? "" : "(" + inv.places().stream()
+                        .map(p -> marked(List.of(p))).collect(Collectors.joining(" || ")) + ") && ";
+                c.open("if (" + where + "!" + w.expr(inv.condition()) + ")");
+                c.line("violated.add(" + JavaNames.literal(inv.name()) + ");").close();
+            }
+            c.line("return violated;");
+        }
+        c.close().blank();
     }
 
     private String marked(List<String> places) {
@@ -321,10 +340,10 @@ final class AtomWriter {
     }
 
     /** Atom code reads and writes its fields and calls its extern interface. */
-    private static final class AtomMapper implements ExprWriter.Mapper {
+    private final class AtomMapper implements ExprWriter.Mapper {
         @Override
         public String read(Symbol s, Expr.Var v) {
-            return s.kind() == Symbol.Kind.CONST ? constant(v.qualifier() == null ? v.name() : v.text()) : field(v.name());
+            return s.kind() == Symbol.Kind.CONST ? constant((ConstDecl) s.decl()) : field(v.name());
         }
 
         @Override
@@ -335,24 +354,6 @@ final class AtomWriter {
         @Override
         public String call(ResolvedCall call, List<String> args) {
             return "bipExterns." + JavaNames.id(call.name()) + "(" + String.join(", ", args) + ")";
-        }
-    }
-
-    /** Constant initialisers refer to other constants. */
-    private static final class ConstantMapper implements ExprWriter.Mapper {
-        @Override
-        public String read(Symbol s, Expr.Var v) {
-            return constant(v.qualifier() == null ? v.name() : v.text());
-        }
-
-        @Override
-        public String write(Symbol s, Expr.Var v) {
-            return null;
-        }
-
-        @Override
-        public String call(ResolvedCall call, List<String> args) {
-            throw new IllegalStateException("constants cannot call functions");
         }
     }
 }

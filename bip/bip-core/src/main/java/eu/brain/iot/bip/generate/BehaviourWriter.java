@@ -271,6 +271,7 @@ final class BehaviourWriter {
         c.line("java.util.EnumSet<" + atomClass + ".Place> before = trace ? a.marking() : null;");
         c.open("if (a.internalStep())");
         c.open("if (trace)").line("publishTrace(i, \"internal\", before);").close();
+        c.line("checkInvariants(i, \"internal\");");
         c.line("continue;").close();
         c.line("boolean acted = false;");
         c.open("for (" + atomClass + ".Port p : a.enabledPorts())");
@@ -279,6 +280,8 @@ final class BehaviourWriter {
             String id = JavaNames.id(p.port().name());
             if (p.role() == BusPlan.Role.LOCAL) {
                 c.line("case " + id + ": acted = fire(i, p); break;");
+            } else if (p.role() == BusPlan.Role.EXTERNAL && policy(p) == PortDecl.Policy.REMEMBER) {
+                c.line("case " + id + ": acted = replay" + suffix(p) + "(i); break;");
             } else if (p.role() == BusPlan.Role.BOUND && (p.has(BusPlan.Role.INITIATOR) || p.has(BusPlan.Role.PARTICIPANT)
                     || p.has(BusPlan.Role.COORDINATOR))) {
                 c.line("case " + id + ": acted = act" + suffix(p) + "(i); break;");
@@ -318,15 +321,44 @@ final class BehaviourWriter {
         c.open("if (e.component != null && !e.component.isEmpty() && !e.component.equals(COMPONENTS[i]))")
                 .line("continue;").close();
         c.open("if (waiting[i] != null || !atoms[i].enabledPorts().contains(" + port(p) + "))");
-        c.line("LOG.log(System.Logger.Level.DEBUG, \"{0}: port " + p.port().name()
-                + " is not enabled, event ignored\", COMPONENTS[i]);");
+        switch (policy(p)) {
+            case REMEMBER -> {
+                c.line("// extern port, policy remember: kept until the port is enabled (run takes it then)");
+                c.line("pending" + suffix(p) + "(i).add(e);");
+            }
+            case ERROR -> c.line("LOG.log(System.Logger.Level.ERROR, \"{0}: extern port " + p.port().name()
+                    + " cannot take an event now (policy error): event dropped\", COMPONENTS[i]);");
+            default -> c.line("LOG.log(System.Logger.Level.DEBUG, \"{0}: port " + p.port().name()
+                    + " is not enabled, event ignored\", COMPONENTS[i]);");
+        }
         c.line("continue;").close();
+        c.line("take" + suffix(p) + "(i, e);");
+        c.line("run(i);");
+        c.close().close().blank();
+        c.open("private boolean take" + suffix(p) + "(int i, " + type + " e)");
         for (Param v : portVars(p.port())) {
             c.line(boundField(p.port(), v.name()) + " = e." + EventsWriter.externalField(v.name()) + ";");
         }
-        c.line("fire(i, " + port(p) + ");");
-        c.line("run(i);");
-        c.close().close().blank();
+        c.line("return fire(i, " + port(p) + ");");
+        c.close().blank();
+        if (policy(p) == PortDecl.Policy.REMEMBER) {
+            String queue = "java.util.ArrayDeque<" + type + ">";
+            c.line("/** Per instance: events for extern port " + p.port().name() + " that came before it was enabled. */");
+            c.line("private final java.util.Map<Integer, " + queue + "> pending" + suffix(p)
+                    + "Queues = new java.util.HashMap<>();");
+            c.open("private " + queue + " pending" + suffix(p) + "(int i)");
+            c.line("return pending" + suffix(p) + "Queues.computeIfAbsent(i, k -> new java.util.ArrayDeque<>());");
+            c.close().blank();
+            c.open("private boolean replay" + suffix(p) + "(int i)");
+            c.line(type + " e = pending" + suffix(p) + "(i).poll();");
+            c.line("return e != null && take" + suffix(p) + "(i, e);");
+            c.close().blank();
+        }
+    }
+
+    /** @return the policy of an extern port; an exported port fired by its event behaves as {@code ignore} */
+    private static PortDecl.Policy policy(BusPlan.PortPlan p) {
+        return p.port().isExtern() ? p.port().extern().policy().effective() : PortDecl.Policy.IGNORE;
     }
 
 
@@ -369,8 +401,15 @@ final class BehaviourWriter {
         c.line("LOG.log(System.Logger.Level.WARNING, \"{0}: port {1} is not enabled\", COMPONENTS[i], port);");
         c.line("return false;").close();
         c.open("if (trace)").line("publishTrace(i, port.name(), before);").close();
+        c.line("checkInvariants(i, port.name());");
         c.line("return true;");
         c.close().blank();
+        c.line("/** A violated invariant is an error of the model: logged, the behaviour goes on. */");
+        c.open("private void checkInvariants(int i, String transition)");
+        c.open("for (String invariant : atoms[i].violatedInvariants())");
+        c.line("LOG.log(System.Logger.Level.ERROR, \"{0}: invariant {1} does not hold after {2}\", COMPONENTS[i], "
+                + "invariant, transition);");
+        c.close().close().blank();
         String trace = events.traceClass();
         c.open("private void publishTrace(int i, String port, java.util.EnumSet<" + atomClass + ".Place> before)");
         c.line(trace + " t = new " + trace + "();");

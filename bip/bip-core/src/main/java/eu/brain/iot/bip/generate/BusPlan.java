@@ -154,6 +154,17 @@ final class BusPlan {
         List<AtomInstance> instances = instances(atom);
         List<PortPlan> plans = new ArrayList<>();
         for (PortDecl port : atom.ports()) {
+            if (port.isExtern()) {
+                // fed by the environment (its own event type), never by a connector
+                for (AtomInstance a : instances) {
+                    system.connectorsOf(a.path(), port.name()).stream().findFirst().ifPresent(k -> diagnostics.error(
+                            k.pos(), "connector " + k.path() + " binds extern port " + a.path() + "." + port.name()
+                                    + ", which only events of the environment fire; bind an ordinary port"));
+                }
+                plans.add(new PortPlan(port, Role.EXTERNAL, null, new String[instances.size()],
+                        new int[instances.size()], new Role[instances.size()]));
+                continue;
+            }
             if (!port.exported()) {
                 plans.add(new PortPlan(port, Role.LOCAL, null, new String[instances.size()], new int[instances.size()],
                         new Role[instances.size()]));

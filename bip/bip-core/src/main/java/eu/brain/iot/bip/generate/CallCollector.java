@@ -34,6 +34,7 @@ class CallCollector {
             }
         }
         atom.priorities().forEach(p -> expr(p.guard()));
+        atom.invariants().forEach(i -> expr(i.condition()));
     }
 
     void var(Expr.Var v) {
@@ -65,9 +66,17 @@ class CallCollector {
             call(c, false);
         } else if (e instanceof Expr.Unary u) {
             expr(u.operand());
+            ResolvedCall op = typer.operator(u, names);
+            if (op != null) {
+                calls.add(op);
+            }
         } else if (e instanceof Expr.Binary b) {
             expr(b.left());
             expr(b.right());
+            ResolvedCall op = typer.operator(b, names);
+            if (op != null) {
+                calls.add(op);
+            }
         }
     }
 

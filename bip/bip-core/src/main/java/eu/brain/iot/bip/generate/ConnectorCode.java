@@ -104,8 +104,7 @@ final class ConnectorCode {
         @Override
         public String read(Symbol s, Expr.Var v) {
             if (s.kind() == Symbol.Kind.CONST) {
-                Object value = ConstantFolder.fold(v, scope);
-                return value instanceof String str ? JavaNames.literal(str) : String.valueOf(value);
+                return JavaNames.value(ConstantFolder.fold(v, scope));
             }
             if (v.qualifier() == null) {
                 return "d_" + v.name();

@@ -83,9 +83,15 @@ final class ExprWriter {
         } else if (e instanceof Expr.Call c) {
             return call(c, false);
         } else if (e instanceof Expr.Unary u) {
-            return "(" + u.op().symbol + expr(u.operand()) + ")";
+            ResolvedCall op = typer.operator(u, names);
+            return op != null ? mapper.call(op, List.of(expr(u.operand())))
+                    : "(" + u.op().symbol + expr(u.operand()) + ")";
         }
         Expr.Binary b = (Expr.Binary) e;
+        ResolvedCall op = typer.operator(b, names);
+        if (op != null) {
+            return mapper.call(op, List.of(expr(b.left()), expr(b.right())));
+        }
         if (b.op() == Expr.BinaryOp.EQ || b.op() == Expr.BinaryOp.NE) {
             Type l = typer.type(b.left(), names);
             Type r = typer.type(b.right(), names);

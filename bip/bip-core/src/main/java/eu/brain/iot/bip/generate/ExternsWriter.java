@@ -63,7 +63,8 @@ final class ExternsWriter {
 
     private static String describe(ResolvedCall call) {
         if (call.decl() == null) {
-            return "extern function " + call.name() + call.params() + " (from a qualified call)";
+            return call.name().startsWith("operator") ? "extern operator " + call.result() + " " + call.name()
+                    + call.params() : "extern function " + call.name() + call.params() + " (from a qualified call)";
         }
         StringBuilder s = new StringBuilder("extern function ");
         if (call.decl().returnType() != null) {

@@ -105,4 +105,27 @@ public final class JavaNames {
     public static String literal(String s) {
         return eu.brain.iot.bip.print.Printer.quote(s, true);
     }
+
+    /** @return a Java literal for a folded constant value (an int, double, boolean or string) */
+    public static String value(Object v) {
+        if (v instanceof String str) {
+            return literal(str);
+        }
+        if (v instanceof Double d) {
+            if (d.isNaN()) {
+                return "Double.NaN";
+            }
+            if (d.isInfinite()) {
+                return d > 0 ? "Double.POSITIVE_INFINITY" : "Double.NEGATIVE_INFINITY";
+            }
+            return d.toString();
+        }
+        if (v instanceof Integer i && i == Integer.MIN_VALUE) {
+            return "Integer.MIN_VALUE";
+        }
+        if (v == null) {
+            throw new IllegalStateException("a constant that does not fold reached the generator (the checker refuses it)");
+        }
+        return v.toString();
+    }
 }

@@ -37,6 +37,8 @@ public final class AtomRun {
     private final Map<String, Object> values = new LinkedHashMap<>();
     private final Map<String, Type> types = new HashMap<>();
     private final Env env = new AtomEnv();
+    /** Folded constants by name: a constant's value never changes. */
+    private final Map<String, Object> constants = new HashMap<>();
 
     /** Creates the instance and runs its initial transition. */
     public AtomRun(AtomType type, PackageScope scope, List<Object> args, ExternFunctions externs) {
@@ -182,6 +184,20 @@ public final class AtomRun {
         return false;
     }
 
+    /**
+     * @return the invariants that do not hold in the current state (one of their places marked, or no place given,
+     *         and the condition false), in declaration order; empty in a correct run
+     */
+    public List<String> violatedInvariants() {
+        List<String> violated = new ArrayList<>();
+        for (AtomType.Invariant i : type.invariants()) {
+            if (i.appliesTo(marking) && !evaluator.test(i.condition(), env)) {
+                violated.add(i.name());
+            }
+        }
+        return violated;
+    }
+
     private void execute(Transition t) {
         t.from().stream().filter(p -> !t.to().contains(p)).forEach(marking::remove);
         marking.addAll(t.to());
@@ -194,9 +210,8 @@ public final class AtomRun {
         @Override
         public Object get(Symbol symbol, String qualifiedName) {
             if (symbol.kind() == Symbol.Kind.CONST) {
-                Object v = eu.brain.iot.bip.check.ConstantFolder.fold(
-                        new eu.brain.iot.bip.model.Expr.Var(eu.brain.iot.bip.model.Pos.NONE, null, qualifiedName), scope);
-                return v;
+                return constants.computeIfAbsent(qualifiedName, n -> eu.brain.iot.bip.check.ConstantFolder.fold(
+                        new eu.brain.iot.bip.model.Expr.Var(eu.brain.iot.bip.model.Pos.NONE, null, n), scope));
             }
             return values.get(symbol.name());
         }

@@ -3,6 +3,7 @@ package eu.brain.iot.bip.interp;
 import java.util.IdentityHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 
 import eu.brain.iot.bip.check.ExprTyper;
 import eu.brain.iot.bip.check.Names;
@@ -22,6 +23,9 @@ public final class Evaluator {
     private final Names names;
     private final Map<Expr.Var, Symbol> symbols = new IdentityHashMap<>();
     private final Map<Expr.Call, ResolvedCall> calls = new IdentityHashMap<>();
+    /** Per binary expression: the extern operator it calls, if its operands are of extern types. */
+    private final Map<Expr.Binary, Optional<ResolvedCall>> operators = new IdentityHashMap<>();
+    private final Map<Expr.Unary, Optional<ResolvedCall>> unaryOperators = new IdentityHashMap<>();
 
     /** @param typer a typer reporting into a scratch Diagnostics (the model is assumed checked) */
     public Evaluator(ExprTyper typer, Names names) {
@@ -92,9 +96,18 @@ public final class Evaluator {
         } else if (e instanceof Expr.Call c) {
             return call(c, env, false);
         } else if (e instanceof Expr.Unary u) {
+            ResolvedCall op = unaryOperators.computeIfAbsent(u, x -> Optional.ofNullable(typer.operator(x, names)))
+                    .orElse(null);
+            if (op != null) {
+                return Ops.coerce(env.call(op, new Object[] {eval(u.operand(), env)}), op.result());
+            }
             return Ops.unary(u.op(), eval(u.operand(), env));
         }
         Expr.Binary b = (Expr.Binary) e;
+        ResolvedCall op = operators.computeIfAbsent(b, x -> Optional.ofNullable(typer.operator(x, names))).orElse(null);
+        if (op != null) {
+            return Ops.coerce(env.call(op, new Object[] {eval(b.left(), env), eval(b.right(), env)}), op.result());
+        }
         Object l = eval(b.left(), env);
         if (b.op() == Expr.BinaryOp.AND) {
             return (Boolean) l && (Boolean) eval(b.right(), env);

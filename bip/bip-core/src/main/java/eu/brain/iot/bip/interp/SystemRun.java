@@ -1,5 +1,6 @@
 package eu.brain.iot.bip.interp;
 
+import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
@@ -28,7 +29,9 @@ import eu.brain.iot.bip.system.SystemModel.Endpoint;
  * enabled candidates (transitions of ports that are not exported, and connector interactions whose ports are all
  * enabled and whose guard holds, after maximal progress within each connector) is chosen by the caller's scheduler
  * and executed (up, down, then each participant's transition). The basis of statistical model checking.
- * Hierarchical connectors and compound priorities are not interpreted. Not thread-safe.
+ * Extern ports take events of the environment ({@link #deliver}); invariants are observed, never enforced
+ * ({@link #violatedInvariants}). Hierarchical connectors and compound priorities are not interpreted. Not
+ * thread-safe.
  */
 public final class SystemRun {
 
@@ -41,7 +44,24 @@ public final class SystemRun {
         }
     }
 
+    /** What became of an environment event given to an extern port ({@link #deliver}). */
+    public enum Delivery {
+        /** the port was enabled: its transition fired at once */
+        FIRED,
+        /** policy remember: kept; the port's transition becomes a candidate once it is enabled */
+        REMEMBERED,
+        /** policy ignore: dropped */
+        IGNORED,
+        /** policy error: dropped and recorded in {@link #errors()} */
+        REFUSED
+    }
+
     private final SystemModel system;
+    /** Remembered events per "atom.port", oldest first: the values of the port's data in port type order. */
+    private final Map<String, ArrayDeque<List<Object>>> pending = new HashMap<>();
+    private final List<String> errors = new ArrayList<>();
+    private static final ArrayDeque<List<Object>> EMPTY = new ArrayDeque<>();
+
     private final Map<String, AtomRun> atoms = new LinkedHashMap<>();
     private final Map<ConnectorType, Evaluator> evaluators = new HashMap<>();
     private final ExternFunctions externs;
@@ -75,7 +95,8 @@ public final class SystemRun {
         for (Map.Entry<String, AtomRun> a : atoms.entrySet()) {
             for (String port : a.getValue().enabledPorts()) {
                 PortDecl decl = a.getValue().type().port(port).orElseThrow();
-                if (!decl.exported()) {
+                boolean local = !decl.exported() && !decl.isExtern();
+                if (local || decl.isExtern() && !pending.getOrDefault(a.getKey() + "." + port, EMPTY).isEmpty()) {
                     list.add(new Candidate(null, List.of(new Endpoint(a.getKey(), port, null)), 0));
                 }
             }
@@ -162,8 +183,72 @@ public final class SystemRun {
                 }
             }
         }
+        if (c.connector() == null) {
+            Endpoint e = c.ports().get(0);
+            ArrayDeque<List<Object>> events = pending.get(e.atom() + "." + e.port());
+            if (events != null && !events.isEmpty()) {
+                setPortData(atoms.get(e.atom()), e.port(), events.poll());
+            }
+        }
         for (Endpoint e : c.ports()) {
             atoms.get(e.atom()).fire(e.port());
+        }
+    }
+
+    /**
+     * An event of the environment for an extern port (BIP2's {@code extern port}): when the port is enabled (after
+     * the atom's priorities) its data takes the event's values and its transition fires at once; otherwise the
+     * port's policy decides ({@code remember}, the default: kept until the port is enabled, then a candidate like
+     * any other; {@code ignore}: dropped; {@code error}: dropped and recorded in {@link #errors()}).
+     *
+     * @param values the values of the port's data, in its port type's parameter order
+     */
+    public Delivery deliver(String atom, String port, List<Object> values) {
+        AtomRun run = atoms.get(atom);
+        if (run == null) {
+            throw new IllegalArgumentException("no atom " + atom + " in the system; atoms: " + atoms.keySet());
+        }
+        PortDecl decl = run.type().port(port).filter(PortDecl::isExtern).orElseThrow(() -> new IllegalArgumentException(
+                "atom " + atom + " has no extern port " + port));
+        if (run.enabledPorts().contains(port)) {
+            setPortData(run, port, values);
+            run.fire(port);
+            return Delivery.FIRED;
+        }
+        return switch (decl.extern().policy().effective()) {
+            case IGNORE -> Delivery.IGNORED;
+            case ERROR -> {
+                errors.add(atom + "." + port + ": an event arrived when the port could not take it (policy error)");
+                yield Delivery.REFUSED;
+            }
+            default -> {
+                pending.computeIfAbsent(atom + "." + port, k -> new ArrayDeque<>()).add(List.copyOf(values));
+                yield Delivery.REMEMBERED;
+            }
+        };
+    }
+
+    /** @return the run's errors so far (events refused by extern ports of policy error), oldest first */
+    public List<String> errors() {
+        return List.copyOf(errors);
+    }
+
+    /** @return per atom, the invariants that do not hold now (atoms whose invariants all hold are left out) */
+    public Map<String, List<String>> violatedInvariants() {
+        Map<String, List<String>> violated = new LinkedHashMap<>();
+        atoms.forEach((path, run) -> {
+            List<String> names = run.violatedInvariants();
+            if (!names.isEmpty()) {
+                violated.put(path, names);
+            }
+        });
+        return violated;
+    }
+
+    private static void setPortData(AtomRun run, String port, List<Object> values) {
+        List<String> data = run.type().port(port).orElseThrow().boundData();
+        for (int i = 0; i < data.size() && i < values.size(); i++) {
+            run.set(data.get(i), values.get(i));
         }
     }
 

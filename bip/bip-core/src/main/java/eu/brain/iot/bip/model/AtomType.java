@@ -57,15 +57,23 @@ public record AtomType(Pos pos, List<Annotation> annotations, String name, List<
     }
 
     /**
-     * {@code on port from A to B provided (guard) do { ... }}, or {@code internal from A to B ...} when {@code port}
-     * is null. {@code guard} and {@code action} may be null.
+     * {@code on port from A to B provided (guard) do { ... } [resume]}, or {@code internal from A to B ...} when
+     * {@code port} is null. {@code guard} and {@code action} may be null. {@code resume} is BIP2's trailing
+     * {@code resume}: the atom's execution goes on after the transition without waiting for an interaction, which
+     * in a step semantics where every transition is atomic changes nothing (see bip/README, "Interpreter").
      */
     public record Transition(Pos pos, List<Annotation> annotations, String port, List<String> from, List<String> to,
-            Expr guard, Urgency urgency, Block action) {
+            Expr guard, Urgency urgency, Block action, boolean resume) {
         public Transition {
             annotations = List.copyOf(annotations);
             from = List.copyOf(from);
             to = List.copyOf(to);
+        }
+
+        /** A transition without {@code resume}. */
+        public Transition(Pos pos, List<Annotation> annotations, String port, List<String> from, List<String> to,
+                Expr guard, Urgency urgency, Block action) {
+            this(pos, annotations, port, from, to, guard, urgency, action, false);
         }
 
         public boolean internal() {
@@ -77,7 +85,18 @@ public record AtomType(Pos pos, List<Annotation> annotations, String name, List<
     public record Priority(Pos pos, String name, String low, String high, Expr guard) {
     }
 
-    /** {@code invariant name at PLACE provided (condition)} (timed BIP). */
-    public record Invariant(Pos pos, String name, String place, Expr condition) {
+    /**
+     * {@code invariant name [at|from P1, P2] provided (condition)}: the condition must hold whenever one of the places
+     * is marked ({@code places} empty: always). {@code at} and {@code from} say the same thing.
+     */
+    public record Invariant(Pos pos, String name, List<String> places, Expr condition) {
+        public Invariant {
+            places = List.copyOf(places);
+        }
+
+        /** @return whether the invariant applies to a marking */
+        public boolean appliesTo(java.util.Collection<String> marking) {
+            return places.isEmpty() || places.stream().anyMatch(marking::contains);
+        }
     }
 }

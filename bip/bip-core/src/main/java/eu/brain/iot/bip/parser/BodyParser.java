@@ -35,11 +35,12 @@ import eu.brain.iot.bip.parser.TokenCursor.SyntaxError;
 final class BodyParser {
 
     private static final Set<String> ATOM_ITEMS = Set.of("data", "export", "port", "place", "places", "initial", "on",
-            "internal", "priority", "clock", "invariant", "end", "@");
+            "internal", "priority", "clock", "invariant", "extern", "end", "@");
     private static final Set<String> CONNECTOR_ITEMS = Set.of("data", "export", "define", "on", "end", "@");
     private static final Set<String> COMPOUND_ITEMS = Set.of("component", "connector", "priority", "export", "end", "@");
     private static final Set<String> TRANSITION_CLAUSES = Set.of("from", "to", "provided", "do", "eager", "lazy",
-            "delayable");
+            "delayable", "resume");
+    private static final Set<String> POLICIES = Set.of("remember", "ignore", "error");
 
     private final TokenCursor in;
     private final ActionParser actions;
@@ -100,8 +101,12 @@ final class BodyParser {
                     data.addAll(dataDecl(itemPos, itemAnnotations, exported));
                 } else if (in.acceptWord("port")) {
                     ports.addAll(portDecl(itemPos, itemAnnotations, exported, true));
+                } else if (in.acceptWord("extern")) {
+                    in.expectWord("port", "after 'extern' in an atom (write 'extern port T p(x) as \"event\"')");
+                    ports.addAll(externPortDecl(itemPos, itemAnnotations, exported));
                 } else if (exported) {
-                    throw in.fail("expected 'data' or 'port' after 'export', found " + in.peek().describe());
+                    throw in.fail("expected 'data', 'port' or 'extern port' after 'export', found "
+                            + in.peek().describe());
                 } else if (in.acceptWord("place") || in.acceptWord("places")) {
                     do {
                         Pos placePos = in.pos();
@@ -125,13 +130,19 @@ final class BodyParser {
                     names.forEach(n -> clocks.add(new ClockDecl(itemPos, n, unit)));
                 } else if (in.acceptWord("invariant")) {
                     String invName = in.ident("an invariant name");
-                    in.expectWord("at", "after invariant " + invName);
-                    String place = in.ident("a place name after 'at'");
-                    in.expectWord("provided", "after the place of invariant " + invName);
-                    invariants.add(new Invariant(itemPos, invName, place, actions.expression()));
+                    List<String> at = List.of();
+                    if (in.acceptWord("at") || in.acceptWord("from")) {
+                        if (in.atWord("provided")) {
+                            throw in.fail("expected a place name of invariant " + invName + ", found 'provided'");
+                        }
+                        at = in.identList("a place name of invariant " + invName);
+                    }
+                    in.expectWord("provided", "in invariant " + invName + " (write 'invariant " + invName
+                            + " [at P1, P2] provided (condition)')");
+                    invariants.add(new Invariant(itemPos, invName, at, actions.expression()));
                 } else {
-                    throw in.fail("expected an atom item ('data', 'port', 'place', 'initial', 'on', 'internal', "
-                            + "'priority', 'clock' or 'end'), found " + in.peek().describe());
+                    throw in.fail("expected an atom item ('data', 'port', 'extern port', 'place', 'initial', 'on', "
+                            + "'internal', 'priority', 'clock', 'invariant' or 'end'), found " + in.peek().describe());
                 }
             });
         }
@@ -180,6 +191,33 @@ final class BodyParser {
         return list;
     }
 
+    /**
+     * {@code extern port PortType p(x) [as "event"] [remember|ignore|error]}: one port, fed by the environment. The
+     * policy says what becomes of an event that arrives when the port cannot take it.
+     */
+    private List<PortDecl> externPortDecl(Pos pos, List<Annotation> annotations, boolean exported) {
+        String type = in.qualifiedName("a port type after 'extern port'");
+        String name = in.ident("a port name after port type " + type);
+        List<String> data = new ArrayList<>();
+        if (in.accept(Kind.LPAREN)) {
+            if (!in.at(Kind.RPAREN)) {
+                data.addAll(in.identList("a data name bound to port " + name));
+            }
+            in.expect(Kind.RPAREN, "to close the data of port " + name);
+        }
+        String event = null;
+        if (in.acceptWord("as")) {
+            event = in.expect(Kind.STRING, "after 'as' in extern port " + name + " (the event's name, in quotes)")
+                    .text();
+        }
+        PortDecl.Policy policy = PortDecl.Policy.NONE;
+        if (in.atAnyWord(POLICIES)) {
+            policy = PortDecl.Policy.valueOf(in.next().text().toUpperCase(java.util.Locale.ROOT));
+        }
+        return List.of(new PortDecl(pos, annotations, exported, type, name, data, null,
+                new PortDecl.Extern(event, policy)));
+    }
+
     /** The clauses after {@code on p} or {@code internal}, in any order (the paper writes 'provided' first). */
     private Transition transition(Pos pos, List<Annotation> annotations, String port) {
         String what = port == null ? "internal transition" : "transition on " + port;
@@ -188,9 +226,11 @@ final class BodyParser {
         Expr guard = null;
         Urgency urgency = Urgency.NONE;
         Block action = null;
+        boolean resume = false;
         while (in.atAnyWord(TRANSITION_CLAUSES)) {
             Token clause = in.next();
             switch (clause.text()) {
+                case "resume" -> resume = true;
                 case "from" -> from = in.identList("a place name after 'from'");
                 case "to" -> to = in.identList("a place name after 'to'");
                 case "provided" -> guard = actions.expression();
@@ -202,7 +242,7 @@ final class BodyParser {
             throw in.fail("expected '" + (from == null ? "from" : "to") + "' in the " + what + ", found "
                     + in.peek().describe());
         }
-        return new Transition(pos, annotations, port, from, to, guard, urgency, action);
+        return new Transition(pos, annotations, port, from, to, guard, urgency, action, resume);
     }
 
     private Priority atomPriority(Pos pos) {
@@ -338,16 +378,22 @@ final class BodyParser {
                     } while (in.accept(Kind.COMMA));
                 } else if (in.acceptWord("connector")) {
                     String type = in.qualifiedName("a connector type after 'connector'");
-                    String instance = in.ident("a connector name after type " + type);
-                    in.expect(Kind.LPAREN, "after connector " + instance + " (its ports, e.g. (A.p, B.q))");
-                    List<PortRef> ports = new ArrayList<>();
-                    if (!in.at(Kind.RPAREN)) {
-                        do {
-                            ports.add(portRef("a port 'component.port' of connector " + instance));
-                        } while (in.accept(Kind.COMMA));
-                    }
-                    in.expect(Kind.RPAREN, "to close the ports of connector " + instance);
-                    connectors.add(new CompoundType.Connector(itemPos, itemAnnotations, type, instance, ports));
+                    boolean first = true;
+                    do {
+                        // BIP2 declares several connectors of one type at once: connector T c1(A.p), c2(B.q)
+                        Pos namePos = first ? itemPos : in.pos();
+                        first = false;
+                        String instance = in.ident("a connector name after type " + type);
+                        in.expect(Kind.LPAREN, "after connector " + instance + " (its ports, e.g. (A.p, B.q))");
+                        List<PortRef> ports = new ArrayList<>();
+                        if (!in.at(Kind.RPAREN)) {
+                            do {
+                                ports.add(portRef("a port 'component.port' of connector " + instance));
+                            } while (in.accept(Kind.COMMA));
+                        }
+                        in.expect(Kind.RPAREN, "to close the ports of connector " + instance);
+                        connectors.add(new CompoundType.Connector(namePos, itemAnnotations, type, instance, ports));
+                    } while (in.accept(Kind.COMMA));
                 } else if (in.acceptWord("priority")) {
                     priorities.add(compoundPriority(itemPos));
                 } else if (in.acceptWord("export")) {

@@ -47,7 +47,9 @@ public final class Parser {
         List<Annotation> annotations = annotationsSafely();
         Pos pos = in.pos();
         if (!in.acceptWord("package")) {
-            in.fail("expected 'package <name>' at the start of the file, found " + in.peek().describe());
+            in.fail("expected 'package <name>' at the start of the file, found " + in.peek().describe()
+                    + (in.atWord("model") ? " (a BIP1 model: this toolchain reads BIP2, where a file is "
+                            + "'package <name> ... end' and the system is a compound type)" : ""));
             while (!in.atEnd() && !in.atWord("package")) {
                 in.next();
             }
@@ -110,7 +112,8 @@ public final class Parser {
             return false;
         }
         return switch (t.text()) {
-            case "const", "extern" -> true;
+            case "const" -> in.peek(ahead + 1).isWord("data");
+            case "extern" -> !in.peek(ahead + 1).isWord("port");
             case "port", "atom", "atomic", "connector", "compound" -> in.peek(ahead + 1).isWord("type");
             default -> false;
         };
@@ -222,6 +225,7 @@ public final class Parser {
                 if (atDeclarationStart(0)) {
                     throw in.fail("expected a parameter type of " + owner + ", found " + in.peek().describe());
                 }
+                boolean constant = in.acceptWord("const");
                 TypeRef type = type("a parameter type of " + owner);
                 String name = null;
                 if (in.at(Kind.IDENT)) {
@@ -230,7 +234,7 @@ public final class Parser {
                     throw in.fail("expected a parameter name after type " + type.name() + " of " + owner + ", found "
                             + in.peek().describe());
                 }
-                params.add(new Param(pos, type, name));
+                params.add(new Param(pos, type, name, constant));
             } while (in.accept(Kind.COMMA));
         }
         in.expect(Kind.RPAREN, "to close the parameters of " + owner + " opened at " + open.line() + ":"

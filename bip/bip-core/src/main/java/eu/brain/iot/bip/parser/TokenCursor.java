@@ -106,7 +106,9 @@ final class TokenCursor {
         if (at(kind)) {
             return next();
         }
-        throw fail("expected '" + kind.symbol + "' " + context + ", found " + peek().describe());
+        String what = kind.symbol != null ? "'" + kind.symbol + "'"
+                : "a " + kind.name().toLowerCase(java.util.Locale.ROOT);
+        throw fail("expected " + what + " " + context + ", found " + peek().describe());
     }
 
     void expectWord(String word, String context) {

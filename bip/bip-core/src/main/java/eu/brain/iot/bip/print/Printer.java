@@ -97,8 +97,8 @@ public final class Printer {
     }
 
     private static String params(List<Param> params) {
-        return "(" + params.stream().map(p -> p.name() == null ? p.type().name() : p.type().name() + " " + p.name())
-                .collect(Collectors.joining(", ")) + ")";
+        return "(" + params.stream().map(p -> (p.constant() ? "const " : "") + p.type().name()
+                + (p.name() == null ? "" : " " + p.name())).collect(Collectors.joining(", ")) + ")";
     }
 
     private void atom(AtomType a) {
@@ -124,13 +124,14 @@ public final class Printer {
             line((t.internal() ? "internal" : "on " + t.port()) + " from " + String.join(", ", t.from()) + " to "
                     + String.join(", ", t.to()) + guard(t.guard())
                     + (t.urgency() == AtomType.Urgency.NONE ? "" : " " + t.urgency().name().toLowerCase(java.util.Locale.ROOT))
-                    + action("do", t.action()));
+                    + action("do", t.action()) + (t.resume() ? " resume" : ""));
         }
         for (AtomType.Priority p : a.priorities()) {
             line("priority " + p.name() + " " + p.low() + " < " + p.high() + guard(p.guard()));
         }
         for (AtomType.Invariant i : a.invariants()) {
-            line("invariant " + i.name() + " at " + i.place() + " provided (" + expr(i.condition()) + ")");
+            line("invariant " + i.name() + (i.places().isEmpty() ? "" : " at " + String.join(", ", i.places()))
+                    + " provided (" + expr(i.condition()) + ")");
         }
         indent--;
         line("end");
@@ -144,8 +145,15 @@ public final class Printer {
 
     private void port(PortDecl p) {
         p.annotations().forEach(a -> line(annotation(a)));
-        line((p.exported() ? "export " : "") + "port " + p.portType() + " " + p.name() + "("
-                + String.join(", ", p.boundData()) + ")" + (p.mergedAs() == null ? "" : " as " + p.mergedAs()));
+        String extern = "";
+        if (p.isExtern()) {
+            extern = (p.extern().event() == null ? "" : " as " + quote(p.extern().event(), false))
+                    + (p.extern().policy() == PortDecl.Policy.NONE ? ""
+                            : " " + p.extern().policy().name().toLowerCase(java.util.Locale.ROOT));
+        }
+        line((p.exported() ? "export " : "") + (p.isExtern() ? "extern " : "") + "port " + p.portType() + " "
+                + p.name() + "(" + String.join(", ", p.boundData()) + ")"
+                + (p.mergedAs() == null ? "" : " as " + p.mergedAs()) + extern);
     }
 
     private static String guard(Expr guard) {

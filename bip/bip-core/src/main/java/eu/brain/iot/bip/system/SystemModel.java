@@ -12,7 +12,7 @@ import eu.brain.iot.bip.check.ConstantFolder;
 import eu.brain.iot.bip.check.PackageScope;
 import eu.brain.iot.bip.check.Workspace;
 import eu.brain.iot.bip.diag.Diagnostics;
-import eu.brain.iot.bip.interp.Ops;
+import eu.brain.iot.bip.check.Values;
 import eu.brain.iot.bip.model.AtomType;
 import eu.brain.iot.bip.model.BipPackage;
 import eu.brain.iot.bip.model.CompoundType;
@@ -189,7 +189,7 @@ public final class SystemModel {
         }
         if (e instanceof Expr.Unary u && u.op() == Expr.UnaryOp.NEG) {
             Object inner = value(u.operand(), scope, params);
-            return inner == null ? null : Ops.unary(u.op(), inner);
+            return inner == null ? null : Values.unary(u.op(), inner);
         }
         return ConstantFolder.fold(e, scope);
     }

@@ -152,4 +152,45 @@ class CheckerTest {
                 "p.bip:10:14: error: place 'S' is declared twice (first at p.bip:10:11)",
                 "p.bip:12:3: error: port type T is already declared as port type at p.bip:2:3");
     }
+
+    @Test
+    void laterBip2Constructs() {
+        assertThat(problems("""
+                  port type R(const int v, int w)
+                  const data int Zero = K - 3
+                  const data int Bad = K / Zero
+                  const data int Loop = Loop + 1
+                  atom type A()
+                    data int x, y
+                    extern port R ev(x, y) as "ev" remember
+                    export port R p(x, y)
+                    place S, U
+                    initial to S do { y = x / Zero; }
+                    on ev from S to U resume
+                    on p from U to S
+                    invariant i1 at S, NOWHERE provided (x >= 0)
+                    invariant i2 provided (x + 1)
+                  end
+                  connector type C(R a, R b)
+                    define a b
+                    on a b down { b.v = a.v; b.w = a.v; }
+                  end
+                  compound type D()
+                    component A a1(), a2()
+                    connector C c(a1.ev, a2.p)
+                  end
+                """)).containsExactly(
+                "p.bip:9:28: error: integer division by zero: the divisor is always 0, so this always fails when it "
+                        + "runs",
+                "p.bip:10:30: error: the value of constant Loop cannot be computed when the model is compiled: write "
+                        + "it with literals, operators and other constants (no function call, no cycle, no integer "
+                        + "division by zero)",
+                "p.bip:16:31: error: integer division by zero: the divisor is always 0, so this always fails when it "
+                        + "runs",
+                "p.bip:19:5: error: unknown place 'NOWHERE' after 'at' in atom type A; places are [S, U]",
+                "p.bip:20:30: error: the condition of invariant i2 must be a bool, but 'x + 1' is of type int",
+                "p.bip:24:19: error: cannot assign to b.v: its port type declares v 'const' (read-only)",
+                "p.bip:28:19: error: connector c binds extern port a1.ev, which only events of the environment fire: "
+                        + "bind an ordinary port");
+    }
 }

@@ -56,7 +56,8 @@ class GeneratedCodeTest {
 
     @Test
     void languageCornersCompileAndMatchTheInterpreter() throws Exception {
-        Toolchain tool = Models.check("atom.bip", Models.resource("golden/atom.bip"), "expressions.bip",
+        Toolchain tool = Models.check("atom.bip", Models.resource("golden/atom.bip"), "bip2.bip",
+                Models.resource("golden/bip2.bip"), "expressions.bip",
                 Models.resource("golden/expressions.bip").replace("@java(import=\"Map\", src=\"org.map\")", ""),
                 "synthetic.bip", SyntheticModel.of(600, 3));
         assertThat(tool.diagnostics().errors()).isEmpty();
@@ -217,5 +218,18 @@ class GeneratedCodeTest {
         @SuppressWarnings("unchecked")
         Map<String, Object> actual = (Map<String, Object>) generated.getClass().getMethod("data").invoke(generated);
         assertThat(actual).as("%s data %s", atom.name(), when).isEqualTo(expected);
+        Object violated;
+        try {
+            violated = generated.getClass().getMethod("violatedInvariants").invoke(generated);
+        } catch (InvocationTargetException e) {
+            violated = e.getCause().getClass().getName();
+        }
+        Object expectedViolated;
+        try {
+            expectedViolated = interpreted.violatedInvariants();
+        } catch (RuntimeException e) {
+            expectedViolated = e.getClass().getName();
+        }
+        assertThat(violated).as("%s violated invariants %s", atom.name(), when).isEqualTo(expectedViolated);
     }
 }

@@ -150,4 +150,105 @@ class SystemRunTest {
                 .containsEntry("position3", 3.0);
         assertThat(run.atom("o").marking()).containsExactly("COLLISION");
     }
+
+    private static final String SENSORS = """
+            package Sensors
+              port type Reading(const int value)
+              port type Tick()
+              atom type Sensor(int limit)
+                data int level
+                extern port Reading sample(level) as "sample" remember
+                extern port Tick reset() as "reset" ignore
+                extern port Tick fault() as "fault" error
+                port Tick report()
+                place IDLE, MEASURED
+                initial to IDLE
+                on sample from IDLE to MEASURED resume
+                on report from MEASURED to IDLE
+                on reset from MEASURED to IDLE do { level = 0; }
+                on fault from MEASURED to MEASURED
+                invariant belowLimit at MEASURED provided (level <= limit)
+              end
+              compound type Plant()
+                component Sensor s(10)
+              end
+            end
+            """;
+
+    @Test
+    void externPortsTakeEnvironmentEventsByTheirPolicy() {
+        SystemRun run = run(SENSORS, new ArrayList<>());
+        assertThat(run.candidates()).as("no event yet: extern ports are no candidates").isEmpty();
+        assertThat(run.deliver("s", "sample", List.of(4))).isEqualTo(SystemRun.Delivery.FIRED);
+        assertThat(run.atom("s").marking()).containsExactly("MEASURED");
+        assertThat(run.atom("s").get("level")).isEqualTo(4);
+
+        assertThat(run.deliver("s", "sample", List.of(7))).isEqualTo(SystemRun.Delivery.REMEMBERED);
+        assertThat(run.deliver("s", "fault", List.of())).isEqualTo(SystemRun.Delivery.FIRED);
+        assertThat(run.candidates()).extracting(Object::toString).containsExactly("[s.report]");
+        run.step(c -> 0);
+        assertThat(run.deliver("s", "reset", List.of())).isEqualTo(SystemRun.Delivery.IGNORED);
+        assertThat(run.deliver("s", "fault", List.of())).isEqualTo(SystemRun.Delivery.REFUSED);
+        assertThat(run.errors()).containsExactly(
+                "s.fault: an event arrived when the port could not take it (policy error)");
+        assertThat(run.candidates()).as("the remembered sample, now that sample is enabled")
+                .extracting(Object::toString).containsExactly("[s.sample]");
+        run.step(c -> 0);
+        assertThat(run.atom("s").get("level")).isEqualTo(7);
+        assertThat(run.candidates()).extracting(Object::toString).containsExactly("[s.report]");
+    }
+
+    @Test
+    void invariantsAreObservedNotEnforced() {
+        SystemRun run = run(SENSORS, new ArrayList<>());
+        assertThat(run.violatedInvariants()).isEmpty();
+        run.atom("s").set("level", 99);
+        assertThat(run.violatedInvariants()).as("at IDLE the invariant does not apply").isEmpty();
+        assertThat(run.deliver("s", "sample", List.of(11))).isEqualTo(SystemRun.Delivery.FIRED);
+        assertThat(run.violatedInvariants()).containsExactly(java.util.Map.entry("s", List.of("belowLimit")));
+        assertThat(run.atom("s").violatedInvariants()).containsExactly("belowLimit");
+        assertThat(run.candidates()).as("the run goes on").isNotEmpty();
+    }
+
+    @Test
+    void externOperatorsCallTheExterns() {
+        List<String> calls = new ArrayList<>();
+        Toolchain tool = Models.check("v.bip", """
+                package Vec
+                  extern data type V
+                  extern function V unit()
+                  extern operator V +(V, V)
+                  extern operator V -(V)
+                  extern operator bool ==(V, V)
+                  port type P()
+                  atom type A()
+                    data V v
+                    data bool same
+                    port P p()
+                    place S
+                    initial to S do { v = unit(); }
+                    on p from S to S do { v = v + -v; same = v == unit(); }
+                  end
+                  compound type C()
+                    component A a()
+                  end
+                end
+                """);
+        assertThat(tool.diagnostics().errors()).isEmpty();
+        SystemModel system = SystemModel.build(tool.workspace(), null, tool.diagnostics()).orElseThrow();
+        SystemRun run = new SystemRun(system, (name, types, result, args) -> {
+            calls.add(name + types + java.util.Arrays.toString(args));
+            return switch (name) {
+                case "unit" -> "u";
+                case "operatorNeg" -> "-" + args[0];
+                case "operatorAdd" -> "(" + args[0] + "+" + args[1] + ")";
+                default -> args[0].equals(args[1]);
+            };
+        });
+        run.step(c -> 0);
+        assertThat(run.atom("a").get("v")).isEqualTo("(u+-u)");
+        assertThat(run.atom("a").get("same")).isEqualTo(false);
+        assertThat(calls).containsExactly("unit[][]", "operatorNeg[V][u]", "operatorAdd[V, V][u, -u]", "unit[][]",
+                "operatorEq[V, V][(u+-u), u]");
+    }
 }

@@ -104,4 +104,35 @@ class DiagnosticsTest {
         assertThat(d.all()).singleElement().asString()
                 .isEqualTo("m.bip:1:33: warning: '=' inside an expression is read as '=='; write '==' to compare");
     }
+
+    @Test
+    void laterBip2ConstructsReportWhatIsMissing() {
+        assertThat(errors("""
+                package P
+                  port type T(const int v)
+                  atom type A(const int id)
+                    data int x
+                    extern port T p(x) as 5
+                    extern port T q(x) as "q" forget
+                    place S
+                    initial to S
+                    on p from S to S resume
+                    invariant i at provided (x > 0)
+                    invariant j x > 0
+                  end
+                end
+                """)).containsExactly(
+                "m.bip:5:27: error: expected a string after 'as' in extern port p (the event's name, in quotes), "
+                        + "found '5'",
+                "m.bip:6:31: error: expected an atom item ('data', 'port', 'extern port', 'place', 'initial', 'on', "
+                        + "'internal', 'priority', 'clock', 'invariant' or 'end'), found 'forget'",
+                "m.bip:10:20: error: expected a place name of invariant i, found 'provided'",
+                "m.bip:11:17: error: expected 'provided' in invariant j (write 'invariant j [at P1, P2] provided "
+                        + "(condition)'), found 'x'");
+    }
+
+    @Test
+    void aBip1ModelIsNamedAsSuch() {
+        assertThat(errors("model M\n  port type P()\nend\n")).first().asString().contains("found 'model' (a BIP1 model");
+    }
 }

@@ -22,7 +22,7 @@ import eu.brain.iot.bip.model.BipPackage;
 class GoldenTest {
 
     @ParameterizedTest
-    @ValueSource(strings = {"package", "atom", "connector", "compound", "expressions"})
+    @ValueSource(strings = {"package", "atom", "connector", "compound", "expressions", "bip2"})
     void parserYieldsTheGoldenModel(String name) throws IOException {
         Diagnostics diagnostics = new Diagnostics();
         BipPackage pkg = Parser.parse(name + ".bip", Models.resource("golden/" + name + ".bip"), diagnostics);

@@ -34,7 +34,7 @@ class RoundTripTest {
 
     @Test
     void goldenModels() {
-        for (String name : List.of("package", "atom", "connector", "compound", "expressions")) {
+        for (String name : List.of("package", "atom", "connector", "compound", "expressions", "bip2")) {
             assertRoundTrip(name, Models.resource("golden/" + name + ".bip"));
         }
     }
