@@ -321,21 +321,71 @@ public final class SimulationWriter {
             if (clause.down() != null) {
                 w.statements(c, clause.down().stmts());
             }
-            cw.writeBack(c, interaction);
+            cw.writeBack(c, interaction, written(clause));
         }
+        Set<String> written = clause == null ? Set.of() : written(clause);
         for (int p = 0; p < k.endpoints().size(); p++) {
             if ((interaction & (1L << p)) != 0) {
                 Endpoint e = k.endpoints().get(p);
                 int atom = index(e.atom());
+                parts.add(e.atom() + "." + e.port());
+                String param = k.type().ports().get(p).name();
+                if (!written.contains(param) && pureSelfLoops(atoms.get(atom).type(), e.port())) {
+                    continue; // nothing of the atom changes: no need to fire it or recompute its mask
+                }
                 c.line("a" + atom + "." + AtomWriter.portMethod(e.port()) + "();");
                 changed.add(atom);
-                parts.add(e.atom() + "." + e.port());
             }
         }
         changed.forEach(atom -> c.line("e" + atom + " = " + type(atom).bridge() + ".mask(a" + atom + ");"));
         c.close();
         names.add(k.path() + ": [" + String.join(", ", parts) + "]");
         return c.toString();
+    }
+
+    /** @return the port parameters whose data the clause's up or down assigns */
+    private static Set<String> written(ConnectorType.Interaction clause) {
+        Set<String> out = new LinkedHashSet<>();
+        if (clause.up() != null) {
+            assigned(clause.up().stmts(), out);
+        }
+        if (clause.down() != null) {
+            assigned(clause.down().stmts(), out);
+        }
+        return out;
+    }
+
+    private static void assigned(List<eu.brain.iot.bip.model.Stmt> stmts, Set<String> out) {
+        for (eu.brain.iot.bip.model.Stmt s : stmts) {
+            if (s instanceof eu.brain.iot.bip.model.Stmt.Assign a && a.target().qualifier() != null) {
+                out.add(a.target().qualifier());
+            } else if (s instanceof eu.brain.iot.bip.model.Stmt.If i) {
+                assigned(i.then(), out);
+                assigned(i.otherwise(), out);
+            }
+        }
+    }
+
+    /**
+     * @return whether firing the port cannot change the atom: every transition it labels goes back to the places
+     *         it came from, has no action, and a guard that calls nothing (a call could draw a random number)
+     */
+    static boolean pureSelfLoops(AtomType atom, String port) {
+        List<AtomType.Transition> ts = atom.transitions().stream().filter(t -> port.equals(t.port())).toList();
+        return !ts.isEmpty() && ts.stream().allMatch(t -> Set.copyOf(t.from()).equals(Set.copyOf(t.to()))
+                && t.from().size() == t.to().size() && (t.action() == null || t.action().stmts().isEmpty())
+                && (t.guard() == null || !hasCall(t.guard())));
+    }
+
+    private static boolean hasCall(Expr e) {
+        if (e instanceof Expr.Call) {
+            return true;
+        } else if (e instanceof Expr.Unary u) {
+            return hasCall(u.operand());
+        } else if (e instanceof Expr.Binary b) {
+            return hasCall(b.left()) || hasCall(b.right());
+        }
+        return false;
     }
 
     /** The Java of an extern call in simulation: a built-in draws from the trace's random source. */
@@ -414,9 +464,9 @@ public final class SimulationWriter {
             }
         }
 
-        void writeBack(Code c, long interaction) {
+        void writeBack(Code c, long interaction, Set<String> written) {
             for (int p = 0; p < k.type().ports().size(); p++) {
-                if ((interaction & (1L << p)) == 0) {
+                if ((interaction & (1L << p)) == 0 || !written.contains(k.type().ports().get(p).name())) {
                     continue;
                 }
                 String param = k.type().ports().get(p).name();

@@ -37,15 +37,6 @@ final class Sampler {
         void update(long done, long successes, long elapsedNanos);
     }
 
-    /** A trace failed (an exception in the model's code, a stochastic function misused). */
-    static final class TraceFailure extends Exception {
-        private static final long serialVersionUID = 1L;
-
-        TraceFailure(String message, Throwable cause) {
-            super(message, cause);
-        }
-    }
-
     record Totals(long samples, long successes, long undecided, long steps, long nanos) {
     }
 
@@ -62,7 +53,7 @@ final class Sampler {
     private long next;
     private long limitChunks;
     private boolean stop;
-    private TraceFailure failure;
+    private TraceFailureException failure;
 
     Sampler(SystemSimulator simulator, int queryIndex, Query query, double[] params, long seed, int threads,
             int maxSteps) {
@@ -78,7 +69,7 @@ final class Sampler {
     /**
      * Samples until the consumer stops or {@code limit} traces were consumed.
      */
-    Totals run(long limit, Consumer consumer, Progress progress) throws TraceFailure, InterruptedException {
+    Totals run(long limit, Consumer consumer, Progress progress) throws TraceFailureException, InterruptedException {
         long start = System.nanoTime();
         limitChunks = (limit + CHUNK - 1) / CHUNK;
         Thread[] workers = new Thread[threads];
@@ -193,7 +184,7 @@ final class Sampler {
             } catch (RuntimeException | StackOverflowError e) {
                 synchronized (lock) {
                     if (failure == null) {
-                        failure = new TraceFailure("trace " + trace + " (seed " + seed + ") failed after state "
+                        failure = new TraceFailureException("trace " + trace + " (seed " + seed + ") failed after state "
                                 + system.lastStep() + ": " + e, e);
                     }
                     lock.notifyAll();

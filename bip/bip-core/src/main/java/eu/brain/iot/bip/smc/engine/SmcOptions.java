@@ -60,4 +60,49 @@ public record SmcOptions(double epsilon, double delta, double alpha, double beta
     public SmcOptions withEngine(SystemSimulator.Engine e) {
         return new SmcOptions(epsilon, delta, alpha, beta, indifference, test, seed, threads, maxSteps, e);
     }
+
+    /** The option names {@link #with} knows. */
+    public static final String KEYS = "epsilon, delta, alpha, beta, indifference, test (sprt|fixed), seed, threads, "
+            + "max-steps, engine (compiled|interpreted)";
+
+    /**
+     * @return these options with one changed by name (as in a requirements file's {@code set} or a CLI option)
+     * @throws IllegalArgumentException naming what is wrong
+     */
+    public SmcOptions with(String key, String value) {
+        try {
+            SmcOptions o = switch (key) {
+                case "epsilon" -> new SmcOptions(Double.parseDouble(value), delta, alpha, beta, indifference, test, seed,
+                        threads, maxSteps, engine);
+                case "delta" -> new SmcOptions(epsilon, Double.parseDouble(value), alpha, beta, indifference, test, seed,
+                        threads, maxSteps, engine);
+                case "alpha" -> new SmcOptions(epsilon, delta, Double.parseDouble(value), beta, indifference, test, seed,
+                        threads, maxSteps, engine);
+                case "beta" -> new SmcOptions(epsilon, delta, alpha, Double.parseDouble(value), indifference, test, seed,
+                        threads, maxSteps, engine);
+                case "indifference" -> new SmcOptions(epsilon, delta, alpha, beta, Double.parseDouble(value), test,
+                        seed, threads, maxSteps, engine);
+                case "test" -> new SmcOptions(epsilon, delta, alpha, beta, indifference,
+                        Test.valueOf(value.toUpperCase(java.util.Locale.ROOT)), seed, threads, maxSteps, engine);
+                case "seed" -> withSeed(Long.parseLong(value));
+                case "threads" -> withThreads(Integer.parseInt(value));
+                case "max-steps" -> new SmcOptions(epsilon, delta, alpha, beta, indifference, test, seed, threads,
+                        Integer.parseInt(value), engine);
+                case "engine" -> withEngine(SystemSimulator.Engine.valueOf(value.toUpperCase(java.util.Locale.ROOT)));
+                default -> throw new IllegalArgumentException("unknown option " + key + " (options: " + KEYS + ")");
+            };
+            String problem = o.problem();
+            if (problem != null) {
+                throw new IllegalArgumentException(problem);
+            }
+            return o;
+        } catch (NumberFormatException e) {
+            throw new IllegalArgumentException("option " + key + " needs a number, found '" + value + "'");
+        } catch (IllegalArgumentException e) {
+            if (e.getMessage() != null && e.getMessage().startsWith("No enum constant")) {
+                throw new IllegalArgumentException("option " + key + ": unknown value '" + value + "' (" + KEYS + ")");
+            }
+            throw e;
+        }
+    }
 }

@@ -40,7 +40,7 @@ public final class SmcRunner {
     }
 
     /** @return the results of every point of query {@code q} */
-    public List<PointResult> run(int q, Listener listener) throws Sampler.TraceFailure, InterruptedException {
+    public List<PointResult> run(int q, Listener listener) throws TraceFailureException, InterruptedException {
         List<PointResult> results = new ArrayList<>();
         for (double[] point : queries.get(q).points()) {
             PointResult r = point(q, point, listener);
@@ -53,7 +53,7 @@ public final class SmcRunner {
     }
 
     /** @return the results of every query, in order */
-    public List<PointResult> runAll(Listener listener) throws Sampler.TraceFailure, InterruptedException {
+    public List<PointResult> runAll(Listener listener) throws TraceFailureException, InterruptedException {
         List<PointResult> all = new ArrayList<>();
         for (int q = 0; q < queries.size(); q++) {
             all.addAll(run(q, listener));
@@ -62,7 +62,7 @@ public final class SmcRunner {
     }
 
     /** Answers query {@code q} at one point of its sweep. */
-    public PointResult point(int q, double[] params, Listener listener) throws Sampler.TraceFailure,
+    public PointResult point(int q, double[] params, Listener listener) throws TraceFailureException,
             InterruptedException {
         Query query = queries.get(q);
         Sampler sampler = new Sampler(simulator, q, query, params, options.seed(), options.effectiveThreads(),
