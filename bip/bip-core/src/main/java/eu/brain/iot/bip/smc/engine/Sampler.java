@@ -184,8 +184,12 @@ final class Sampler {
             } catch (RuntimeException | StackOverflowError e) {
                 synchronized (lock) {
                     if (failure == null) {
-                        failure = new TraceFailureException("trace " + trace + " (seed " + seed + ") failed after state "
-                                + system.lastStep() + ": " + e, e);
+                        String where = system.lastStep().isEmpty() ? "in its initial state"
+                                : "at a step after " + system.lastStep();
+                        String what = e instanceof eu.brain.iot.bip.smc.runtime.StochasticException ? e.getMessage()
+                                : e.toString();
+                        failure = new TraceFailureException("trace " + trace + " (run seed " + seed + ") failed "
+                                + where + ": " + what, e);
                     }
                     lock.notifyAll();
                 }
