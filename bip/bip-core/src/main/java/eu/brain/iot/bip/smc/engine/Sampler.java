@@ -159,19 +159,17 @@ final class Sampler {
                     monitor.reset();
                     int position = 0;
                     int taken = 0;
-                    boolean dead = false;
                     int r;
                     while ((r = monitor.observe(aps)) < 0) {
                         if (position == max) {
                             break;
                         }
                         position++;
-                        if (!dead) {
-                            if (system.step()) {
-                                taken++;
-                            } else {
-                                dead = true;
-                            }
+                        if (system.step()) {
+                            taken++;
+                        } else {
+                            r = monitor.decideOnRepeatedState(aps);
+                            break;
                         }
                     }
                     if (r == 1) {
