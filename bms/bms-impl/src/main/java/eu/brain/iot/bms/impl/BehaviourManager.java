@@ -357,8 +357,9 @@ final class BehaviourManager {
         for (HeldType h : heldNow.values()) {
             TypeState state = states.get(h.eventType);
             if (state == null || (state instanceof Resting r && now >= r.until())) {
+                // the deadline counts from now: the events were held before this BMS took them over
                 Searching searching = new Searching(hierarchies.getOrDefault(h.eventType, List.of(h.eventType)),
-                        Math.min(now, h.since), 1);
+                        now, 1);
                 if (state == null ? states.putIfAbsent(h.eventType, searching) == null
                         : states.replace(h.eventType, state, searching)) {
                     search(h.eventType, searching);
