@@ -2,6 +2,8 @@ package eu.brain.iot.eventing.api;
 
 import java.time.Instant;
 
+import org.osgi.dto.DTO;
+
 /**
  * The base type of every event exchanged on the BRAIN-IoT event bus.
  * <p>
@@ -14,8 +16,11 @@ import java.time.Instant;
  * <p>
  * Implementing {@link Cloneable} lets the bus take those copies with {@link Object#clone()} instead of
  * reflection; subclasses need not do anything about it.
+ * <p>
+ * As in the original BRAIN-IoT eventing API, an event is an OSGi {@link DTO}, so code that treats events as DTOs
+ * (the OSGi Converter's DTO rules, {@link DTO#toString()}) keeps working.
  */
-public abstract class BrainIoTEvent implements Cloneable {
+public abstract class BrainIoTEvent extends DTO implements Cloneable {
 
     /** The framework UUID of the node that published the event; filled in by the bus when missing. */
     public String sourceNode;

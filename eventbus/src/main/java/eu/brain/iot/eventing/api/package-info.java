@@ -1,9 +1,10 @@
 /**
  * The BRAIN-IoT eventing API: the types every smart behaviour compiles against. Source compatible with the
- * original BRAIN-IoT fabric's {@code eu.brain.iot.eventing.api}.
+ * original BRAIN-IoT fabric's {@code eu.brain.iot.eventing.api}. Since 1.1, {@code BrainIoTEvent} extends
+ * {@code org.osgi.dto.DTO}, as it does there.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package eu.brain.iot.eventing.api;
 
 import org.osgi.annotation.bundle.Export;

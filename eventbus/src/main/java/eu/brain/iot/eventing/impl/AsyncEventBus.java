@@ -8,6 +8,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.locks.LockSupport;
 
@@ -18,7 +19,11 @@ import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.EventBusOverflowException;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+import eu.brain.iot.eventing.impl.EventHold.Held;
 import eu.brain.iot.eventing.impl.RouteTable.Route;
+import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
+import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
 
 /**
  * The bus core, free of OSGi wiring so that it can be tested and benchmarked on its own.
@@ -28,29 +33,43 @@ import eu.brain.iot.eventing.impl.RouteTable.Route;
  * wakes at most one delivery worker. The workers of the {@link DeliveryPool} then take turns on the behaviours
  * with queued events: each makes its behaviour's copy and calls it (see {@link ConsumerChannel}).
  * <p>
+ * An event that no behaviour takes is put to the {@link UnhandledEventPolicy}, if there is one, on the
+ * publisher's thread and outside any lock; what it asks to hold joins the {@link EventHold}. When a behaviour is
+ * added, the held events it takes are moved into its queue in the same critical section that publishes the new
+ * route table, and a publisher about to hold an event checks under that lock that the table it routed with is
+ * still current (else it routes again): so held events are never overtaken, lost or delivered twice.
+ * <p>
  * Ownership: {@link #routes} is replaced, never changed, under {@link #consumersLock}, which also guards
- * {@link #channels}; publishers read {@link #routes} without locking. The pool lives as long as the bus.
+ * {@link #channels}, {@link #hold} and changes of {@link #policy}; publishers read {@link #routes} and
+ * {@link #policy} without locking. Waiters for room in the hold wait on {@link #consumersLock}, which is notified
+ * whenever the hold shrinks or the table or the policy changes. The settings are volatile and changed in place by
+ * {@link #reconfigure}. The pool lives as long as the bus.
  */
 final class AsyncEventBus implements EventBus {
 
     private static final ConsumerChannel[] NONE = new ConsumerChannel[0];
+    /** How an overflow of the hold names the "consumer" whose queue was full. */
+    static final String HOLD_NAME = "the bus's hold of unhandled events";
+    /** Set while this thread is inside the policy: an event it publishes there is not put to the policy again. */
+    private static final ThreadLocal<Boolean> ASKING = ThreadLocal.withInitial(() -> Boolean.FALSE);
 
     private final String sourceNode;
-    private final int queueCapacity;
-    private final long overflowTimeoutNanos;
+    private volatile int queueCapacity;
+    private volatile long overflowTimeoutNanos;
     private final DeliveryPool pool;
     private final Logger log;
 
     private final Object consumersLock = new Object();
     private final Map<Long, ConsumerChannel> channels = new LinkedHashMap<>();
-    private volatile RouteTable routes = RouteTable.EMPTY;
+    private volatile RouteTable routes = new RouteTable(List.of());
+    private final EventHold hold = new EventHold();
+    private volatile UnhandledEventPolicy policy;
+    private final AtomicBoolean policyFailureLogged = new AtomicBoolean();
     private final ConcurrentHashMap<String, EventTypeCounters> counters = new ConcurrentHashMap<>();
 
     AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, DeliveryPool.Settings delivery,
             Logger log) {
-        if (queueCapacity < 1) {
-            throw new IllegalArgumentException("queue capacity must be at least 1, was " + queueCapacity);
-        }
+        checkCapacity(queueCapacity);
         this.sourceNode = sourceNode;
         this.queueCapacity = queueCapacity;
         this.overflowTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(0, overflowTimeoutMillis));
@@ -73,7 +92,12 @@ final class AsyncEventBus implements EventBus {
         }
         RouteTable table = routes;
         Route route = table.routeFor(snapshot.getClass(), this::countersFor);
-        dispatch(table, route, snapshot, route.filtered().length == 0 ? null : EventMaps.toMap(snapshot));
+        ConsumerChannel[] targets = targets(route, snapshot);
+        if (targets.length > 0) {
+            send(targets, route.counters(), snapshot); // the hot path: no hold, no policy, no lock
+        } else {
+            unhandled(table, route, snapshot, snapshot.getClass());
+        }
     }
 
     @Override
@@ -87,28 +111,38 @@ final class AsyncEventBus implements EventBus {
         snapshot.putIfAbsent("timestamp", Instant.now());
         RouteTable table = routes;
         Route route = table.routeFor(eventType, this::countersFor);
-        dispatch(table, route, snapshot, snapshot);
+        ConsumerChannel[] targets = targets(route, snapshot);
+        if (targets.length > 0) {
+            send(targets, route.counters(), snapshot);
+        } else {
+            unhandled(table, route, snapshot, null);
+        }
     }
 
-    private void dispatch(RouteTable table, Route route, Object snapshot, Map<String, ?> fields) {
+    /** The route of an event in a table; {@code type} is null for an untyped event. */
+    private Route routeOf(RouteTable table, Class<?> type, String eventType) {
+        return type != null ? table.routeFor(type, this::countersFor) : table.routeFor(eventType, this::countersFor);
+    }
+
+    /** The behaviours an event goes to: the route's unfiltered ones, and the filtered ones that match it. */
+    private static ConsumerChannel[] targets(Route route, Object snapshot) {
         ConsumerChannel[] targets = route.plain();
-        if (route.filtered().length > 0) {
-            targets = withMatchingFilters(targets, route.filtered(), fields);
+        if (route.filtered().length == 0) {
+            return targets;
         }
-        EventTypeCounters typeCounters = route.counters();
-        if (targets.length == 0) {
-            targets = table.lastResort;
-        }
-        if (targets.length == 0) {
-            typeCounters.published.increment();
-            typeCounters.unhandled.increment();
-            if (typeCounters.unhandledLogged.compareAndSet(false, true)) {
-                log.warn("No smart behaviour consumes events of type {} and no consumer of last resort is "
-                        + "installed; such events are counted as 'unhandled' (Gogo: bus:stats).",
-                        typeCounters.eventType);
+        @SuppressWarnings("unchecked")
+        Map<String, ?> fields = snapshot instanceof Map<?, ?> map ? (Map<String, ?>) map : EventMaps.toMap(snapshot);
+        List<ConsumerChannel> matching = new ArrayList<>(Arrays.asList(targets));
+        for (ConsumerChannel c : route.filtered()) {
+            if (c.spec.filter().matches(fields)) {
+                matching.add(c);
             }
-            return;
         }
+        return matching.toArray(NONE);
+    }
+
+    /** Queue an event for its targets, all or none, waiting for room up to the overflow timeout. */
+    private void send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot) {
         reserveAll(targets, typeCounters.eventType);
         typeCounters.published.increment();
         Envelope envelope = new Envelope(snapshot, typeCounters, targets.length == 1);
@@ -121,15 +155,140 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
-    private static ConsumerChannel[] withMatchingFilters(ConsumerChannel[] plain, ConsumerChannel[] filtered,
-            Map<String, ?> fields) {
-        List<ConsumerChannel> targets = new ArrayList<>(Arrays.asList(plain));
-        for (ConsumerChannel c : filtered) {
-            if (c.spec.filter().matches(fields)) {
-                targets.add(c);
+    /**
+     * An event that no behaviour takes in {@code table}: asks the unhandled-event policy (outside any lock, once
+     * per event) and holds it, or follows the bus's own rules. Holding re-checks the table under the lock; when
+     * it changed since, the event is routed again (with the same answer of the policy), so that it can neither
+     * be appended to the hold after a hand-over nor overtake held events.
+     */
+    private void unhandled(RouteTable table, Route route, Object snapshot, Class<?> type) {
+        Disposition decided = null;
+        long deadline = 0;
+        while (true) {
+            UnhandledEventPolicy current = policy;
+            if (current == null) {
+                lastResortOrUnhandled(table, route.counters(), snapshot);
+                return;
+            }
+            if (decided == null) {
+                decided = ask(current, route);
+            }
+            if (decided == Disposition.UNHANDLED) {
+                countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()
+                        + " gives them up");
+                return;
+            }
+            if (decided != Disposition.HOLD) {
+                lastResortOrUnhandled(table, route.counters(), snapshot);
+                return;
+            }
+            if (deadline == 0) {
+                deadline = System.nanoTime() + overflowTimeoutNanos;
+            }
+            Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis());
+            HoldOutcome outcome = hold(table, current, held, deadline);
+            if (outcome == HoldOutcome.HELD) {
+                return;
+            }
+            if (outcome == HoldOutcome.POLICY_CHANGED) {
+                decided = null; // another policy, or none, decides now
+            }
+            table = routes;
+            route = routeOf(table, type, route.counters().eventType);
+            ConsumerChannel[] targets = targets(route, snapshot);
+            if (targets.length > 0) {
+                send(targets, route.counters(), snapshot);
+                return;
             }
         }
-        return targets.toArray(NONE);
+    }
+
+    private enum HoldOutcome { HELD, TABLE_CHANGED, POLICY_CHANGED }
+
+    /** Append to the hold if {@code table} and {@code current} are still current, waiting for room if full. */
+    private HoldOutcome hold(RouteTable table, UnhandledEventPolicy current, Held held, long deadline) {
+        int max = Math.max(1, current.maxHeldEvents()); // asked outside the lock, as every call of the policy
+        synchronized (consumersLock) {
+            while (true) {
+                if (routes != table) {
+                    return HoldOutcome.TABLE_CHANGED;
+                }
+                if (policy != current) {
+                    return HoldOutcome.POLICY_CHANGED;
+                }
+                if (hold.size() < max) {
+                    hold.append(held);
+                    held.counters().published.increment();
+                    return HoldOutcome.HELD;
+                }
+                long left = deadline - System.nanoTime();
+                if (left <= 0) {
+                    throw holdFull(held.counters().eventType, max, current);
+                }
+                try {
+                    // woken (notifyAll) whenever the hold shrinks or the table or the policy changes
+                    TimeUnit.NANOSECONDS.timedWait(consumersLock, left);
+                } catch (InterruptedException e) {
+                    Thread.currentThread().interrupt();
+                    throw new EventBusOverflowException(held.counters().eventType, HOLD_NAME, "Event of type "
+                            + held.counters().eventType + " not delivered: the publishing thread was interrupted "
+                            + "while it waited for room in the bus's hold of unhandled events.");
+                }
+            }
+        }
+    }
+
+    private EventBusOverflowException holdFull(String eventType, int max, UnhandledEventPolicy current) {
+        return new EventBusOverflowException(eventType, HOLD_NAME, "Event of type " + eventType
+                + " not delivered: the bus already holds " + max + " events (the maximum of the unhandled-event "
+                + "policy " + current.getClass().getName() + ") waiting for behaviours to be installed, and none "
+                + "left the hold for " + TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos) + " ms. Publish more "
+                + "slowly, raise the policy's maximum of held events (max.held.events of the Behaviour Management "
+                + "Service), or find out why no behaviour that consumes the held types gets installed (Gogo: "
+                + "bus:stats, bms:pending).");
+    }
+
+    /** Ask the policy, once per event; an event published from inside the policy is not put to it again. */
+    private Disposition ask(UnhandledEventPolicy current, Route route) {
+        if (ASKING.get()) {
+            return Disposition.LAST_RESORT;
+        }
+        ASKING.set(Boolean.TRUE);
+        try {
+            Disposition d = current.unhandled(route.counters().eventType, route.typeNames());
+            return d == null ? Disposition.LAST_RESORT : d;
+        } catch (RuntimeException e) {
+            if (policyFailureLogged.compareAndSet(false, true)) {
+                log.error("The unhandled-event policy {} failed on an event of type {}; such events follow the "
+                        + "bus's own rules (consumers of last resort, else counted as unhandled). Further failures "
+                        + "are not logged.", current.getClass().getName(), route.counters().eventType, e);
+            }
+            return Disposition.LAST_RESORT;
+        } finally {
+            ASKING.set(Boolean.FALSE);
+        }
+    }
+
+    /** The bus's own rules for an event no behaviour takes: consumers of last resort, else counted unhandled. */
+    private void lastResortOrUnhandled(RouteTable table, EventTypeCounters typeCounters, Object snapshot) {
+        if (table.lastResort.length > 0) {
+            send(table.lastResort, typeCounters, snapshot);
+        } else {
+            countUnhandled(typeCounters, "no consumer of last resort is installed");
+        }
+    }
+
+    private void countUnhandled(EventTypeCounters typeCounters, String why) {
+        typeCounters.published.increment();
+        typeCounters.unhandled.increment();
+        logUnhandled(typeCounters, why);
+    }
+
+    private void logUnhandled(EventTypeCounters typeCounters, String why) {
+        if (typeCounters.unhandledLogged.compareAndSet(false, true)) {
+            log.warn("No smart behaviour consumes events of type {} and {}; such events are counted as "
+                    + "'unhandled' (Gogo: bus:stats).", typeCounters.eventType, why);
+        }
     }
 
     /** Reserve a queue slot in every target, or none: waits for room up to the overflow timeout. */
@@ -166,15 +325,32 @@ final class AsyncEventBus implements EventBus {
         return counters.computeIfAbsent(eventType, EventTypeCounters::new);
     }
 
-    /** Start delivering to a behaviour. */
+    private static void checkCapacity(int queueCapacity) {
+        if (queueCapacity < 1) {
+            throw new IllegalArgumentException("queue capacity must be at least 1, was " + queueCapacity);
+        }
+    }
+
+    /**
+     * Start delivering to a behaviour. The held events it takes are moved into its queue, in hold order, before
+     * the new table is published: every publisher that can reach the behaviour queues behind them.
+     */
     void addConsumer(ConsumerSpec spec) {
         ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log);
+        boolean madeReady;
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);
-            routes = new RouteTable(channels.values());
+            RouteTable next = new RouteTable(channels.values());
+            madeReady = hold.size() > 0
+                    && hold.handOver(held -> targets(routeOf(next, held.type(), held.counters().eventType), held.snapshot()));
+            routes = next;
             if (old != null) {
                 old.close();
             }
+            consumersLock.notifyAll(); // publishers waiting for room in the hold: re-check
+        }
+        if (madeReady) {
+            pool.signal();
         }
     }
 
@@ -185,18 +361,106 @@ final class AsyncEventBus implements EventBus {
             if (channel != null) {
                 routes = new RouteTable(channels.values());
                 channel.close();
+                consumersLock.notifyAll();
             }
         }
     }
 
-    /** Stop delivering: behaviours are closed first, so that the workers clean them up before they end. */
+    /** Follow this policy from now on (it replaces any other: the component binds the highest-ranked one). */
+    void policy(UnhandledEventPolicy newPolicy) {
+        synchronized (consumersLock) {
+            policy = newPolicy;
+            consumersLock.notifyAll();
+        }
+    }
+
+    /**
+     * This policy went away: if it was the current one, its held events are dispatched by the bus's own rules
+     * (consumers of last resort, else counted unhandled), in hold order, never silently dropped.
+     */
+    void policyGone(UnhandledEventPolicy gone) {
+        boolean madeReady = false;
+        synchronized (consumersLock) {
+            if (policy != gone) {
+                return; // replaced by a higher-ranked policy first: that one keeps the hold
+            }
+            policy = null;
+            List<Held> released = hold.removeAll();
+            RouteTable table = routes;
+            for (Held held : released) {
+                ConsumerChannel[] to = targets(routeOf(table, held.type(), held.counters().eventType), held.snapshot());
+                if (to.length == 0) {
+                    to = table.lastResort;
+                }
+                if (to.length > 0) {
+                    madeReady |= EventHold.enqueue(held, to);
+                } else {
+                    held.counters().unhandled.increment();
+                    logUnhandled(held.counters(), "the unhandled-event policy that held them went away");
+                }
+            }
+            consumersLock.notifyAll();
+        }
+        if (madeReady) {
+            pool.signal();
+        }
+    }
+
+    /** @see eu.brain.iot.eventing.spi.HeldEvents#held() */
+    List<HeldType> held() {
+        synchronized (consumersLock) {
+            return hold.types();
+        }
+    }
+
+    /** @see eu.brain.iot.eventing.spi.HeldEvents#discard(String, String) */
+    int discard(String eventType, String reason) {
+        List<Held> discarded;
+        synchronized (consumersLock) {
+            discarded = hold.remove(eventType);
+            consumersLock.notifyAll();
+        }
+        if (!discarded.isEmpty()) {
+            discarded.get(0).counters().unhandled.add(discarded.size());
+            log.warn("{} held events of type {} were given up ({}); they are counted as 'unhandled' (Gogo: "
+                    + "bus:stats).", discarded.size(), eventType, reason);
+        }
+        return discarded.size();
+    }
+
+    /**
+     * Apply new settings in place: queued and held events stay. The queue capacity applies to the next
+     * reservations of every behaviour (a lower one makes publishers wait until a queue drains below it).
+     */
+    void reconfigure(int newQueueCapacity, long newOverflowTimeoutMillis, DeliveryPool.Settings delivery) {
+        checkCapacity(newQueueCapacity);
+        overflowTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(0, newOverflowTimeoutMillis));
+        synchronized (consumersLock) {
+            queueCapacity = newQueueCapacity;
+            channels.values().forEach(c -> c.capacity(newQueueCapacity));
+        }
+        pool.reconfigure(delivery);
+    }
+
+    /**
+     * Stop delivering: behaviours are closed first, so that the workers clean them up before they end. Held
+     * events are counted as unhandled and logged.
+     */
     void close() {
+        List<Held> held;
         synchronized (consumersLock) {
             channels.values().forEach(ConsumerChannel::close);
             channels.clear();
-            routes = RouteTable.EMPTY;
+            routes = new RouteTable(List.of());
+            held = hold.removeAll();
+            consumersLock.notifyAll();
         }
         pool.shutdown();
+        held.forEach(h -> h.counters().unhandled.increment());
+        if (!held.isEmpty()) {
+            log.warn("The event bus stopped with {} held events (waiting for behaviours to be installed); they were "
+                    + "counted as 'unhandled'.", held.size());
+        }
     }
 
     /** The delivery workers alive, stalled or not. */

@@ -27,7 +27,8 @@ import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
  * {@link #close}. Once closed, the token is never given back: the last holder discards what is queued and gives
  * the behaviour object back, exactly once.
  * <p>
- * Memory is bounded by {@code capacity}: {@code offered - taken} never exceeds it.
+ * Memory is bounded by {@code capacity}: {@code offered - taken} never exceeds it, except by the events handed
+ * over from the bus's hold ({@link #forceReserve}), which the hold's own bound limits.
  */
 final class ConsumerChannel {
 
@@ -53,7 +54,8 @@ final class ConsumerChannel {
     }
 
     final ConsumerSpec spec;
-    private final int capacity;
+    /** Changed in place by a reconfiguration of the bus; applies to the next reservations. */
+    private volatile int capacity;
     private final DeliveryPool pool;
     private final Logger log;
     private final BehaviourCaller caller;
@@ -99,6 +101,19 @@ final class ConsumerChannel {
             }
         }
         return true;
+    }
+
+    /**
+     * Reserve room for one envelope even beyond the capacity: only for events handed over from the bus's hold,
+     * under the bus's lock, where waiting is not possible. The hold's own bound keeps this bounded.
+     */
+    void forceReserve() {
+        offered.incrementAndGet();
+    }
+
+    /** A new capacity (bus reconfiguration): a lower one only makes publishers wait until the queue drains. */
+    void capacity(int capacity) {
+        this.capacity = capacity;
     }
 
     /** Give back a slot reserved for an event that will not be queued after all. */

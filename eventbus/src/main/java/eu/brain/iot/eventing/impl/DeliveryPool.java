@@ -49,7 +49,8 @@ final class DeliveryPool {
     /** Busy-wait polls before an idle worker starts yielding: events often come back to back. */
     private static final int SPINS = 64;
 
-    private final Settings settings;
+    /** Replaced in place by {@link #reconfigure}; read by every worker at each decision. */
+    private volatile Settings settings;
     private final Logger log;
     private final StallWatchdog watchdog;
 
@@ -83,6 +84,23 @@ final class DeliveryPool {
         watchdog.stop();
         for (DeliveryWorker worker : workers) {
             LockSupport.unpark(worker.thread);
+        }
+    }
+
+    /**
+     * New settings, applied in place: more workers start at once; surplus workers retire once idle (parked ones
+     * are woken to notice); the stall threshold and idle spin apply from the next inspection or idle period.
+     */
+    void reconfigure(Settings newSettings) {
+        int before = settings.workers();
+        settings = newSettings;
+        watchdog.threshold(newSettings.stallThresholdNanos());
+        if (newSettings.workers() > before) {
+            ensureWorkers();
+        } else if (newSettings.workers() < before) {
+            for (DeliveryWorker worker : parked) {
+                LockSupport.unpark(worker.thread);
+            }
         }
     }
 

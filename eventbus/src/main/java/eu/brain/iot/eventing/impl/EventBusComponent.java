@@ -19,9 +19,11 @@ import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
 import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Modified;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
 import org.osgi.service.metatype.annotations.Designate;
@@ -34,16 +36,21 @@ import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+import eu.brain.iot.eventing.spi.HeldEvents;
+import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
 /**
- * The event bus as a Declarative Services component: publishes {@link EventBus} and {@link EventBusStatistics},
- * and follows the smart behaviour whiteboard. Behaviours come and go at any time, hence dynamic references with
- * bind methods (constructor injection cannot follow them); everything else arrives through the constructor.
+ * The event bus as a Declarative Services component: publishes {@link EventBus}, {@link EventBusStatistics} and
+ * {@link HeldEvents}, follows the smart behaviour whiteboard and the highest-ranked {@link UnhandledEventPolicy}.
+ * Behaviours and the policy come and go at any time, hence dynamic references with bind methods (constructor
+ * injection cannot follow them); everything else arrives through the constructor. A configuration change is
+ * applied in place ({@link #modified}): the bus, its queues and its hold stay, so no queued event is lost to it.
  */
-@Component(service = { EventBus.class, EventBusStatistics.class }, configurationPid = EventBusComponent.PID,
-        configurationPolicy = ConfigurationPolicy.OPTIONAL)
+@Component(service = { EventBus.class, EventBusStatistics.class, HeldEvents.class },
+        configurationPid = EventBusComponent.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
 @Designate(ocd = BusConfig.class)
-public final class EventBusComponent implements EventBus, EventBusStatistics {
+public final class EventBusComponent implements EventBus, EventBusStatistics, HeldEvents {
 
     static final String PID = "eu.brain.iot.eventing";
     /** How long a delivery worker beyond {@code delivery.workers} (added for a stalled behaviour) stays idle. */
@@ -70,9 +77,31 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
                 TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_threshold_ms())), WORKER_KEEP_ALIVE_NANOS);
     }
 
+    @Modified
+    void modified(BusConfig config) {
+        try {
+            bus.reconfigure(config.queue_capacity(), config.overflow_timeout_ms(),
+                    deliverySettings(config, Runtime.getRuntime().availableProcessors()));
+        } catch (IllegalArgumentException e) {
+            log.error("The event bus configuration (PID {}) was not applied: {}. The previous settings stay; fix "
+                    + "the configuration.", PID, e.getMessage());
+        }
+    }
+
     @Deactivate
     void deactivate() {
         bus.close();
+    }
+
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY, unbind = "unsetUnhandledEventPolicy")
+    void setUnhandledEventPolicy(UnhandledEventPolicy policy) {
+        bus.policy(policy);
+        log.info("Unhandled events are now put to the policy {}", policy.getClass().getName());
+    }
+
+    void unsetUnhandledEventPolicy(UnhandledEventPolicy policy) {
+        bus.policyGone(policy);
     }
 
     @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
@@ -207,5 +236,15 @@ public final class EventBusComponent implements EventBus, EventBusStatistics {
     @Override
     public List<ConsumerStatistics> consumers() {
         return bus.consumers();
+    }
+
+    @Override
+    public List<HeldType> held() {
+        return bus.held();
+    }
+
+    @Override
+    public int discard(String eventType, String reason) {
+        return bus.discard(eventType, reason);
     }
 }

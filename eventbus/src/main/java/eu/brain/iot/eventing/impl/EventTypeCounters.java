@@ -13,6 +13,8 @@ final class EventTypeCounters {
     final LongAdder failed = new LongAdder();
     final LongAdder unhandled = new LongAdder();
     final LongAdder discarded = new LongAdder();
+    /** Events of this type in the bus's hold now (a gauge: up when held, down when handed over or given up). */
+    final LongAdder held = new LongAdder();
     /** Set once the first unhandled event of this type was logged, so that the log is not flooded. */
     final AtomicBoolean unhandledLogged = new AtomicBoolean();
 
@@ -28,6 +30,7 @@ final class EventTypeCounters {
         s.failed = failed.sum();
         s.unhandled = unhandled.sum();
         s.discarded = discarded.sum();
+        s.held = held.sum();
         return s;
     }
 }

@@ -13,11 +13,10 @@ import java.util.function.Function;
  * Which behaviours take which event types, for one fixed set of behaviours. A new table replaces the old one
  * whenever a behaviour comes or goes, so a table never changes; only its cache of computed routes grows.
  * Routes are cached by type name and remember their class weakly, so a table never keeps an uninstalled
- * bundle's classes alive.
+ * bundle's classes alive. Cached routes hold their bus's counters, so a table, even an empty one, belongs to
+ * one bus and is never shared between buses.
  */
 final class RouteTable {
-
-    static final RouteTable EMPTY = new RouteTable(List.of());
 
     private final List<ConsumerChannel> typedOrNamed;
     final ConsumerChannel[] lastResort;
@@ -46,7 +45,7 @@ final class RouteTable {
 
     /** The route of an untyped event: behaviours that consume exactly this type name. */
     Route routeFor(String eventType, Function<String, EventTypeCounters> counters) {
-        return byName.computeIfAbsent(eventType, t -> compute(Set.of(t), counters.apply(t), null));
+        return byName.computeIfAbsent(eventType, t -> compute(new LinkedHashSet<>(List.of(t)), counters.apply(t), null));
     }
 
     private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type) {
@@ -58,7 +57,7 @@ final class RouteTable {
             }
         }
         return new Route(new WeakReference<>(type), counters, plain.toArray(ConsumerChannel[]::new),
-                filtered.toArray(ConsumerChannel[]::new));
+                filtered.toArray(ConsumerChannel[]::new), List.copyOf(names));
     }
 
     /** The names of the class, its superclasses and all its interfaces. */
@@ -80,9 +79,10 @@ final class RouteTable {
     }
 
     /**
-     * The behaviours an event type goes to: those without a filter always, those with a filter when it matches.
+     * The behaviours an event type goes to: those without a filter always, those with a filter when it matches;
+     * {@code typeNames} is the type, then its supertypes and interfaces (what an unhandled-event policy is told).
      */
     record Route(WeakReference<Class<?>> type, EventTypeCounters counters, ConsumerChannel[] plain,
-            ConsumerChannel[] filtered) {
+            ConsumerChannel[] filtered, List<String> typeNames) {
     }
 }

@@ -68,8 +68,9 @@ final class StallWatchdog implements Runnable {
     }
 
     private final DeliveryPool pool;
-    private final long thresholdNanos;
-    private final long tickNanos;
+    /** Changed in place by a reconfiguration of the bus ({@link #threshold}); read by the watchdog thread. */
+    private volatile long thresholdNanos;
+    private volatile long tickNanos;
     private final Logger log;
     private final Thread thread;
     /** Behaviours whose stall was logged; weak, so that behaviours that went away are forgotten. */
@@ -87,6 +88,13 @@ final class StallWatchdog implements Runnable {
 
     void start() {
         thread.start();
+    }
+
+    /** A new stall threshold, applied from the next inspection on. */
+    void threshold(long newThresholdNanos) {
+        tickNanos = Math.max(MIN_TICK_NANOS, newThresholdNanos / 2);
+        thresholdNanos = newThresholdNanos;
+        LockSupport.unpark(thread);
     }
 
     /** Called after the pool stopped running. */

@@ -12,8 +12,13 @@ public class EventTypeStatistics extends DTO {
     public long delivered;
     /** Deliveries whose consumer threw. */
     public long failed;
-    /** Events that no consumer took, not even a consumer of last resort. */
+    /** Events that no consumer took, not even a consumer of last resort (held events given up included). */
     public long unhandled;
     /** Deliveries dropped because their consumer went away while they were queued. */
     public long discarded;
+    /**
+     * Events of this type held now by the bus for an unhandled-event policy, waiting for a behaviour that
+     * consumes them (already counted in {@link #published}). Since 1.1.
+     */
+    public long held;
 }

@@ -1,0 +1,108 @@
+package eu.brain.iot.eventing.impl;
+
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Iterator;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.function.Function;
+
+import eu.brain.iot.eventing.spi.HeldType;
+
+/**
+ * The bus's hold: events that no behaviour consumes and that the unhandled-event policy asked the bus to keep,
+ * in one queue for all types, in publish order, until a behaviour that takes them is registered.
+ * <p>
+ * Ownership: every method must be called while holding the bus's lock (the one under which the route table is
+ * replaced), which is what makes a hand-over and the publication of the new table one step: no publisher can
+ * append to the hold or reach the new behaviour in between. The hold itself has no lock and no thread.
+ */
+final class EventHold {
+
+    /**
+     * One held event: the bus's snapshot (an event object, or a map for an untyped event), its class ({@code null}
+     * when untyped: then it is routed by {@code counters.eventType}), and when it was held.
+     */
+    record Held(Object snapshot, Class<?> type, EventTypeCounters counters, long since) {
+    }
+
+    private final ArrayDeque<Held> queue = new ArrayDeque<>();
+
+    int size() {
+        return queue.size();
+    }
+
+    void append(Held held) {
+        queue.addLast(held);
+        held.counters.held.increment();
+    }
+
+    /**
+     * Move every held event that {@code targets} now routes into those behaviours' queues, in hold order, beyond
+     * their capacity if need be (the hold's bound limits that); the others stay held, in order.
+     *
+     * @return whether a behaviour became ready to run (then the caller signals the pool, after its lock)
+     */
+    boolean handOver(Function<Held, ConsumerChannel[]> targets) {
+        boolean madeReady = false;
+        for (Iterator<Held> it = queue.iterator(); it.hasNext();) {
+            Held held = it.next();
+            ConsumerChannel[] to = targets.apply(held);
+            if (to.length > 0) {
+                it.remove();
+                held.counters.held.decrement();
+                madeReady |= enqueue(held, to);
+            }
+        }
+        return madeReady;
+    }
+
+    /** Queue one event that leaves the hold (or is re-dispatched) for these behaviours, waiting for none. */
+    static boolean enqueue(Held held, ConsumerChannel[] to) {
+        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1);
+        boolean madeReady = false;
+        for (ConsumerChannel c : to) {
+            c.forceReserve();
+            madeReady |= c.enqueue(envelope);
+        }
+        return madeReady;
+    }
+
+    /** Take the held events of one type out of the hold. */
+    List<Held> remove(String eventType) {
+        List<Held> removed = new ArrayList<>();
+        for (Iterator<Held> it = queue.iterator(); it.hasNext();) {
+            Held held = it.next();
+            if (held.counters.eventType.equals(eventType)) {
+                it.remove();
+                held.counters.held.decrement();
+                removed.add(held);
+            }
+        }
+        return removed;
+    }
+
+    /** Take every held event out of the hold, in hold order. */
+    List<Held> removeAll() {
+        List<Held> removed = new ArrayList<>(queue);
+        queue.clear();
+        removed.forEach(h -> h.counters.held.decrement());
+        return removed;
+    }
+
+    /** One entry per type, ordered by its oldest held event. */
+    List<HeldType> types() {
+        Map<String, HeldType> byType = new LinkedHashMap<>();
+        for (Held held : queue) {
+            HeldType t = byType.computeIfAbsent(held.counters.eventType, name -> {
+                HeldType n = new HeldType();
+                n.eventType = name;
+                n.since = held.since;
+                return n;
+            });
+            t.count++;
+        }
+        return new ArrayList<>(byType.values());
+    }
+}
