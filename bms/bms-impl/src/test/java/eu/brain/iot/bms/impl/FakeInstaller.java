@@ -48,6 +48,8 @@ final class FakeInstaller implements BundleInstaller {
     /** When set, find answers later: the test resolves it. */
     volatile Deferred<List<BehaviourCandidate>> pendingFind;
     boolean remote;
+    /** When set, every install request fails at once with it. */
+    volatile InstallException failEveryInstall;
 
     void offer(String type, String symbolicName, String version) {
         BehaviourCandidate c = new BehaviourCandidate();
@@ -77,6 +79,10 @@ final class FakeInstaller implements BundleInstaller {
     public Promise<InstalledBehaviour> install(InstallRequest request) {
         Deferred<InstalledBehaviour> d = promises.deferred();
         requests.add(new Request(request, d));
+        InstallException failure = failEveryInstall;
+        if (failure != null) {
+            d.fail(failure);
+        }
         return d.getPromise();
     }
 
