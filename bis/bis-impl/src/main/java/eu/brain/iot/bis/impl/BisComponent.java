@@ -1,0 +1,181 @@
+package eu.brain.iot.bis.impl;
+
+import java.io.IOException;
+import java.net.URI;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Hashtable;
+import java.util.List;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.ThreadFactory;
+
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceRegistration;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.metatype.annotations.Designate;
+import org.osgi.service.resolver.Resolver;
+import org.osgi.util.promise.PromiseFactory;
+import org.osgi.util.tracker.ServiceTracker;
+
+import eu.brain.iot.bis.api.BundleInstaller;
+import eu.brain.iot.bis.impl.install.Installer;
+import eu.brain.iot.bis.impl.journal.Journal;
+import eu.brain.iot.bis.impl.repo.Repositories;
+import eu.brain.iot.bis.impl.repo.TrustedKeys;
+import eu.brain.iot.bis.impl.repo.UrlReader;
+import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+
+/**
+ * The Bundle Installer Service of a node. At activation it reads its journal and its indexes, installs again what the
+ * journal lists, and only then registers the {@link BundleInstaller} service and the {@code bis:*} commands, so that
+ * whoever waits for the service (the BMS, the node's ready line) sees the journal's behaviours back. A configuration
+ * change restarts it (the journal keeps what is installed; installed bundles stay).
+ * <p>
+ * Threads: the installer's thread ({@code brain-iot-bis}) runs installs; {@code brain-iot-bis-repos} reads indexes;
+ * {@code brain-iot-bis-callbacks} runs promise callbacks. {@link #registrations} is guarded by {@code this}.
+ */
+@Component(configurationPid = BisComponent.PID, immediate = true)
+@Designate(ocd = BisConfig.class)
+public final class BisComponent {
+
+    public static final String PID = "eu.brain.iot.bis";
+
+    private final Logger log;
+    private final Repositories repositories;
+    private final Installer installer;
+    private final ScheduledExecutorService scheduler;
+    private final ExecutorService callbacks;
+    private final ServiceTracker<EventBusStatistics, EventBusStatistics> statistics;
+    private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
+    private boolean closed;
+
+    @Activate
+    public BisComponent(BundleContext context, BisConfig config, @Reference Resolver resolver,
+            @Reference(service = LoggerFactory.class) Logger log) throws IOException {
+        this.log = log;
+        TrustedKeys keys = TrustedKeys.of(config.trusted_keys());
+        List<URI> urls = new ArrayList<>();
+        for (String url : config.repositories()) {
+            if (url != null && !url.isBlank()) {
+                urls.add(parse(url.trim()));
+            }
+        }
+        Path journalDir = journalDir(context, config);
+        UrlReader reader = new UrlReader(Duration.ofMillis(Math.max(100, config.download_timeout_ms())));
+        this.scheduler = Executors.newSingleThreadScheduledExecutor(named("brain-iot-bis-repos"));
+        this.callbacks = Executors.newSingleThreadExecutor(named("brain-iot-bis-callbacks"));
+        this.repositories = new Repositories(urls, keys, reader, scheduler, config.refresh_ms(),
+                config.retry_initial_ms(), config.retry_max_ms(), log::warn, log::info);
+        this.statistics = new ServiceTracker<>(context, EventBusStatistics.class, null);
+        this.statistics.open();
+        this.installer = Installer.create(context, resolver, repositories, reader, new Journal(journalDir),
+                Arrays.asList(config.prefer()), Math.max(1, config.activation_timeout_ms()), statistics::getService,
+                Executors.newSingleThreadExecutor(named("brain-iot-bis")), new PromiseFactory(callbacks, scheduler),
+                log::error, log::warn, log::info);
+        log.info("Bundle Installer: indexes {}, {} trusted keys, journal {}", urls, keys.keys().size(), journalDir);
+        if (urls.isEmpty()) {
+            log.warn("Bundle Installer: no repositories configured (repositories of {}): nothing can be installed",
+                    PID);
+        }
+        repositories.start();
+        long restoreTimeout = Math.max(0, config.restore_timeout_ms());
+        Thread starter = named("brain-iot-bis-start").newThread(() -> start(context, restoreTimeout));
+        starter.start();
+    }
+
+    /** Waits for the indexes' first reads, restores the journal, then offers the service and the commands. */
+    private void start(BundleContext context, long restoreTimeoutMillis) {
+        long deadline = System.currentTimeMillis() + restoreTimeoutMillis;
+        try {
+            if (!installer.pending().isEmpty()) {
+                repositories.awaitLoaded(restoreTimeoutMillis);
+                long left = deadline - System.currentTimeMillis();
+                if (installer.restore().timeout(Math.max(1, left)).getFailure() != null) {
+                    log.warn("Bundle Installer: the journal's behaviours are not all back after {} ms; offering the"
+                            + " service anyway, they keep being installed", restoreTimeoutMillis);
+                }
+            }
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return;
+        } catch (RuntimeException e) {
+            log.error("Bundle Installer: restoring the journal failed: {}", e.toString());
+        }
+        register(context);
+    }
+
+    private synchronized void register(BundleContext context) {
+        if (closed) {
+            return;
+        }
+        try {
+            registrations.add(context.registerService(BundleInstaller.class, installer, null));
+            Hashtable<String, Object> props = new Hashtable<>();
+            props.put("osgi.command.scope", "bis");
+            props.put("osgi.command.function", new String[] { "list", "install", "uninstall", "allow", "repos" });
+            registrations.add(context.registerService(BisCommands.class,
+                    new BisCommands(installer, repositories), props));
+        } catch (IllegalStateException e) {
+            // the bundle is stopping: nothing to offer
+        }
+    }
+
+    @Deactivate
+    void deactivate() {
+        synchronized (this) {
+            closed = true;
+            for (ServiceRegistration<?> r : registrations) {
+                try {
+                    r.unregister();
+                } catch (IllegalStateException e) {
+                    // already gone with the bundle
+                }
+            }
+            registrations.clear();
+        }
+        repositories.close();
+        installer.close();
+        scheduler.shutdownNow();
+        callbacks.shutdownNow();
+        statistics.close();
+    }
+
+    private static URI parse(String url) {
+        try {
+            URI uri = URI.create(url);
+            if (uri.getScheme() == null) {
+                return Path.of(url).toAbsolutePath().toUri(); // a plain path is a file
+            }
+            return uri;
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException("repositories: '" + url + "' is no URL (" + e.getMessage()
+                    + "): give file:, http: or https: URLs of index files");
+        }
+    }
+
+    private static Path journalDir(BundleContext context, BisConfig config) {
+        if (!config.journal_dir().isBlank()) {
+            return Path.of(config.journal_dir());
+        }
+        String node = context.getProperty("fabric.node.name");
+        return Path.of(System.getProperty("user.home"), ".local", "state", "brain-iot",
+                node == null || node.isBlank() ? "node" : node);
+    }
+
+    private static ThreadFactory named(String name) {
+        return r -> {
+            Thread t = new Thread(r, name);
+            t.setDaemon(true);
+            return t;
+        };
+    }
+}

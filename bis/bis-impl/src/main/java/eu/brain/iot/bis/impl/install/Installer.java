@@ -1,0 +1,409 @@
+package eu.brain.iot.bis.impl.install;
+
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.function.Consumer;
+import java.util.function.Supplier;
+
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.BundleException;
+import org.osgi.util.promise.Deferred;
+import org.osgi.util.promise.Promise;
+import org.osgi.util.promise.PromiseFactory;
+import org.osgi.service.resolver.Resolver;
+
+import eu.brain.iot.bis.api.BehaviourCandidate;
+import eu.brain.iot.bis.api.BundleInstaller;
+import eu.brain.iot.bis.api.InstallException;
+import eu.brain.iot.bis.api.InstallException.Problem;
+import eu.brain.iot.bis.api.InstallRequest;
+import eu.brain.iot.bis.api.InstalledBehaviour;
+import eu.brain.iot.bis.impl.journal.BehaviourRecord;
+import eu.brain.iot.bis.impl.journal.BundleFact;
+import eu.brain.iot.bis.impl.journal.Journal;
+import eu.brain.iot.bis.impl.repo.BehaviourResource;
+import eu.brain.iot.bis.impl.repo.Repositories;
+import eu.brain.iot.bis.impl.repo.UrlReader;
+import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+
+/**
+ * The local {@link BundleInstaller}. Requests are answered at once with a promise; installs, uninstalls and
+ * allowances run one at a time on the installer's single thread ({@code executor}), so that each transaction sees
+ * the framework as the previous one left it. Requests for a behaviour already being installed get that install's
+ * promise.
+ * <p>
+ * Threads: {@link #inflight} and {@link #closed} are guarded by {@code this}; the {@link Ledger} guards itself;
+ * everything else is touched only on the installer's thread. Promise callbacks run on the promise factory's
+ * callback executor, never on the installer's thread.
+ */
+public final class Installer implements BundleInstaller {
+
+    private final BundleContext context;
+    private final Repositories repositories;
+    private final ChoicePolicy policy;
+    private final Ledger ledger;
+    private final Transaction transaction;
+    private final Activation activation;
+    private final long activationTimeoutMillis;
+    private final ExecutorService executor;
+    private final PromiseFactory promises;
+    private final Consumer<String> warn;
+    private final Consumer<String> info;
+    private final Map<String, Promise<InstalledBehaviour>> inflight = new HashMap<>();
+    private boolean closed;
+
+    /**
+     * @throws java.io.IOException when the journal cannot be read (the message names the file and line)
+     */
+    public static Installer create(BundleContext context, Resolver resolver, Repositories repositories,
+            UrlReader reader, Journal journal, List<String> prefer, long activationTimeoutMillis,
+            Supplier<EventBusStatistics> statistics, ExecutorService executor, PromiseFactory promises,
+            Consumer<String> error, Consumer<String> warn, Consumer<String> info) throws java.io.IOException {
+        Ledger ledger = new Ledger(journal, journal.load(), error);
+        Activation activation = new Activation(context, statistics);
+        Transaction transaction = new Transaction(context, resolver, repositories, reader, activation,
+                activationTimeoutMillis, warn);
+        return new Installer(context, repositories, new ChoicePolicy(prefer), ledger, transaction, activation,
+                activationTimeoutMillis, executor, promises, warn, info);
+    }
+
+    private Installer(BundleContext context, Repositories repositories, ChoicePolicy policy, Ledger ledger,
+            Transaction transaction, Activation activation, long activationTimeoutMillis, ExecutorService executor,
+            PromiseFactory promises, Consumer<String> warn, Consumer<String> info) {
+        this.context = context;
+        this.repositories = repositories;
+        this.policy = policy;
+        this.ledger = ledger;
+        this.transaction = transaction;
+        this.activation = activation;
+        this.activationTimeoutMillis = activationTimeoutMillis;
+        this.executor = executor;
+        this.promises = promises;
+        this.warn = warn;
+        this.info = info;
+    }
+
+    @Override
+    public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes) {
+        List<BehaviourCandidate> found = policy.byConsumedTypes(repositories.resources(), consumedTypes).stream()
+                .map(BehaviourResource::candidate).toList();
+        return promises.resolved(found);
+    }
+
+    @Override
+    public Promise<InstalledBehaviour> install(InstallRequest request) {
+        List<BehaviourResource> candidates;
+        if (request.symbolicName != null && !request.symbolicName.isBlank()) {
+            try {
+                candidates = policy.byName(repositories.resources(), request.symbolicName, request.versionRange);
+            } catch (IllegalArgumentException e) {
+                return failed(Problem.NOT_FOUND, "versionRange '" + request.versionRange + "' is no OSGi version"
+                        + " range (e.g. [1.0,2)): " + e.getMessage());
+            }
+        } else if (request.consumedTypes != null && !request.consumedTypes.isEmpty()) {
+            candidates = policy.byConsumedTypes(repositories.resources(), request.consumedTypes);
+        } else {
+            return failed(Problem.NOT_FOUND, "an install request needs symbolicName or consumedTypes");
+        }
+        String what = request.symbolicName != null && !request.symbolicName.isBlank()
+                ? request.symbolicName + (request.versionRange == null ? "" : " " + request.versionRange)
+                : "a behaviour consuming " + request.consumedTypes;
+        if (candidates.isEmpty()) {
+            return failed(Problem.NOT_FOUND, "no repository offers " + what + " (indexes: " + indexes()
+                    + "); add it to an index, or configure an index that has it (repositories of eu.brain.iot.bis)");
+        }
+        List<BehaviourResource> allowed = request.operator ? candidates
+                : candidates.stream().filter(c -> !ledger.isBlocked(c.symbolicName())).toList();
+        if (allowed.isEmpty()) {
+            return failed(Problem.REMOVED_BY_OPERATOR, candidates.get(0).symbolicName() + " was removed by an"
+                    + " operator, so it is not installed automatically; 'bis:allow " + candidates.get(0).symbolicName()
+                    + "' or 'bis:install " + candidates.get(0).symbolicName() + "' in the shell brings it back");
+        }
+        BehaviourResource chosen = allowed.get(0);
+        String reason = request.reason == null || request.reason.isBlank() ? "requested" : request.reason;
+        synchronized (this) {
+            if (closed) {
+                return failed(Problem.CLOSED, "the Bundle Installer is stopping");
+            }
+            Promise<InstalledBehaviour> running = inflight.get(chosen.symbolicName());
+            if (running != null) {
+                return running;
+            }
+            Deferred<InstalledBehaviour> deferred = promises.deferred();
+            inflight.put(chosen.symbolicName(), deferred.getPromise());
+            try {
+                executor.execute(() -> runInstall(chosen, reason, request.operator, deferred));
+            } catch (RejectedExecutionException e) {
+                inflight.remove(chosen.symbolicName());
+                return failed(Problem.CLOSED, "the Bundle Installer is stopping");
+            }
+            return deferred.getPromise();
+        }
+    }
+
+    @Override
+    public Promise<InstalledBehaviour> uninstall(String symbolicName, String reason, boolean byOperator) {
+        Deferred<InstalledBehaviour> deferred = promises.deferred();
+        try {
+            executor.execute(() -> {
+                try {
+                    deferred.resolve(runUninstall(symbolicName, reason, byOperator));
+                } catch (InstallException e) {
+                    deferred.fail(e);
+                } catch (InterruptedException e) {
+                    deferred.fail(new InstallException(Problem.CLOSED, "the Bundle Installer is stopping"));
+                } catch (RuntimeException e) {
+                    warn.accept("uninstall of " + symbolicName + " failed: " + e);
+                    deferred.fail(new InstallException(Problem.NOT_INSTALLED, "uninstall of " + symbolicName
+                            + " failed: " + e, e));
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            return failed(Problem.CLOSED, "the Bundle Installer is stopping");
+        }
+        return deferred.getPromise();
+    }
+
+    @Override
+    public void allow(String symbolicName) {
+        ledger.allow(symbolicName, "allowed by an operator");
+    }
+
+    @Override
+    public List<InstalledBehaviour> installed() {
+        return ledger.behaviours().stream().map(this::dto).toList();
+    }
+
+    /** @return the operator's removals: symbolic name to reason */
+    public Map<String, String> blocked() {
+        return ledger.blocked();
+    }
+
+    /** Journal entries not installed again (yet) since the start. */
+    public List<BehaviourRecord> pending() {
+        return ledger.pending();
+    }
+
+    /**
+     * Installs again, re-verified, what the journal lists; a behaviour whose bundles are all still in the framework
+     * (the installer restarted, not the node) is taken back and started if stopped. Runs on the installer's thread.
+     */
+    public Promise<Void> restore() {
+        Deferred<Void> done = promises.deferred();
+        executor.execute(() -> {
+            for (BehaviourRecord r : ledger.pending()) {
+                try {
+                    restore(r);
+                } catch (InstallException e) {
+                    warn.accept("the journal lists " + r.symbolicName() + " " + r.version() + " (installed because: "
+                            + r.reason() + "), which could not be installed again: " + e.getMessage()
+                            + "; it stays in the journal and is tried again at the next start");
+                } catch (InterruptedException e) {
+                    break;
+                } catch (RuntimeException e) {
+                    warn.accept("restoring " + r.symbolicName() + " from the journal failed: " + e);
+                }
+            }
+            done.resolve(null);
+        });
+        return done.getPromise();
+    }
+
+    public void close() {
+        synchronized (this) {
+            closed = true;
+        }
+        executor.shutdownNow();
+    }
+
+    private void restore(BehaviourRecord r) throws InstallException, InterruptedException {
+        List<Bundle> present = new ArrayList<>();
+        for (BundleFact f : r.bundles()) {
+            Bundle b = context.getBundle(f.location());
+            if (b != null && b.getState() != Bundle.UNINSTALLED) {
+                present.add(b);
+            }
+        }
+        if (present.size() == r.bundles().size()) {
+            ledger.adopt(r);
+            ensureActive(r, present.get(0));
+            info.accept("journal: " + r.symbolicName() + " " + r.version() + " is still installed, taken back");
+            return;
+        }
+        List<BehaviourResource> offered = policy.byName(repositories.resources(), r.symbolicName(),
+                "[" + r.version() + "," + r.version() + "]");
+        if (offered.isEmpty()) {
+            throw new InstallException(Problem.NOT_FOUND, "no index in use offers " + r.symbolicName() + " "
+                    + r.version() + " now (indexes: " + indexes() + ")");
+        }
+        BehaviourRecord installed = installNew(offered.get(0), "journal: " + r.reason(), r.installedAt());
+        info.accept("journal: " + installed.symbolicName() + " " + installed.version() + " installed again");
+    }
+
+    private void runInstall(BehaviourResource chosen, String reason, boolean operator,
+            Deferred<InstalledBehaviour> deferred) {
+        try {
+            if (operator) {
+                ledger.allow(chosen.symbolicName(), "installed by an operator");
+            }
+            BehaviourRecord record = ledger.get(chosen.symbolicName()).orElse(null);
+            if (record != null) {
+                Bundle own = context.getBundle(record.own().location());
+                if (own != null && own.getState() != Bundle.UNINSTALLED) {
+                    ensureActive(record, own);
+                    done(chosen, deferred, record);
+                    return;
+                }
+                warn.accept(record.symbolicName() + " was uninstalled behind the installer's back; installing it"
+                        + " again");
+                removeBundles(record);
+                ledger.remove(record.symbolicName(), "vanished", "its bundle was uninstalled by someone else");
+            }
+            for (Bundle b : context.getBundles()) {
+                if (chosen.symbolicName().equals(b.getSymbolicName())) {
+                    throw new InstallException(Problem.START_FAILED, chosen.symbolicName() + " " + b.getVersion()
+                            + " is already in the framework (bundle " + b.getBundleId() + ", " + b.getLocation()
+                            + ") but was not installed by the Bundle Installer: start it with 'start " + b.getBundleId()
+                            + "', or uninstall it and let the installer manage it");
+                }
+            }
+            done(chosen, deferred, installNew(chosen, reason, System.currentTimeMillis()));
+        } catch (InstallException e) {
+            warn.accept("install of " + chosen + " failed: " + e.getMessage());
+            fail(chosen, deferred, e);
+        } catch (InterruptedException e) {
+            fail(chosen, deferred, new InstallException(Problem.CLOSED, "the Bundle Installer stopped during the"
+                    + " install of " + chosen));
+        } catch (RuntimeException e) {
+            warn.accept("install of " + chosen + " failed unexpectedly: " + e);
+            fail(chosen, deferred, new InstallException(Problem.START_FAILED, "install of " + chosen
+                    + " failed unexpectedly: " + e, e));
+        }
+    }
+
+    private BehaviourRecord installNew(BehaviourResource chosen, String reason, long installedAt)
+            throws InstallException, InterruptedException {
+        Transaction.Result result = transaction.run(chosen);
+        List<BundleFact> facts = new ArrayList<>();
+        for (Transaction.Installed i : result.installed()) {
+            BundleFact fact = new BundleFact(i.facts().symbolicName(), i.facts().version().toString(),
+                    i.facts().sha256(), i.bundle().getLocation());
+            if (i.bundle() == result.own()) {
+                facts.add(0, fact);
+            } else {
+                facts.add(fact);
+            }
+        }
+        for (Bundle b : result.reused()) {
+            ledger.bundle(b.getLocation()).filter(f -> !facts.contains(f)).ifPresent(facts::add);
+        }
+        BehaviourRecord record = new BehaviourRecord(chosen.symbolicName(), chosen.version().toString(),
+                chosen.consumed(), chosen.repository().toString(), installedAt, reason, facts);
+        ledger.put(record, "installed");
+        info.accept("installed " + chosen + " from " + chosen.repository() + " with " + (facts.size() - 1)
+                + " dependencies (" + reason + ")");
+        return record;
+    }
+
+    /** Starts a behaviour that is installed but not active (and the bundles it needs), then waits for the bus. */
+    private void ensureActive(BehaviourRecord record, Bundle own) throws InstallException, InterruptedException {
+        if (own.getState() == Bundle.ACTIVE && Activation.hasBehaviours(own)) {
+            return;
+        }
+        List<BundleFact> startOrder = new ArrayList<>(record.bundles());
+        startOrder.add(startOrder.remove(0)); // dependencies first, the behaviour last
+        for (BundleFact f : startOrder) {
+            Bundle b = context.getBundle(f.location());
+            if (b != null && b.getState() != Bundle.ACTIVE
+                    && b.getHeaders().get(org.osgi.framework.Constants.FRAGMENT_HOST) == null) {
+                try {
+                    b.start();
+                } catch (BundleException e) {
+                    throw new InstallException(Problem.START_FAILED, f.symbolicName() + " (bundle " + b.getBundleId()
+                            + ") is installed but failed to start again: " + e.getMessage(), e);
+                }
+            }
+        }
+        if (activation.await(own, activationTimeoutMillis) == null) {
+            throw new InstallException(Problem.ACTIVATION_TIMEOUT, record.symbolicName() + " was started again, but"
+                    + " no smart behaviour of it was registered with the bus within " + activationTimeoutMillis
+                    + " ms; see 'scr:info' in the shell");
+        }
+        info.accept("restarted " + record.symbolicName() + " " + record.version());
+    }
+
+    private InstalledBehaviour runUninstall(String symbolicName, String reason, boolean byOperator)
+            throws InstallException, InterruptedException {
+        BehaviourRecord record = ledger.get(symbolicName).orElse(null);
+        if (byOperator) {
+            ledger.block(symbolicName, reason == null ? "removed by an operator" : reason);
+        }
+        if (record == null) {
+            if (byOperator) {
+                return notInstalled(symbolicName);
+            }
+            throw new InstallException(Problem.NOT_INSTALLED, symbolicName + " is not installed by the Bundle"
+                    + " Installer ('bis:list' shows what is)");
+        }
+        InstalledBehaviour dto = dto(record);
+        removeBundles(record);
+        ledger.remove(symbolicName, byOperator ? "uninstalled-by-operator" : "uninstalled", reason);
+        dto.state = "UNINSTALLED";
+        info.accept("uninstalled " + symbolicName + " " + record.version() + " (" + reason + ")");
+        return dto;
+    }
+
+    /** Uninstalls the behaviour's bundle and those of its bundles no other installed behaviour lists. */
+    private void removeBundles(BehaviourRecord record) throws InterruptedException {
+        List<Bundle> remove = new ArrayList<>();
+        for (BundleFact f : record.bundles()) {
+            Bundle b = context.getBundle(f.location());
+            if (b != null && ledger.otherUsers(f.location(), record.symbolicName()) == 0) {
+                remove.add(b);
+            }
+        }
+        java.util.Collections.reverse(remove); // rollBack reverses again: the behaviour goes first
+        transaction.rollBack(remove);
+    }
+
+    private void done(BehaviourResource chosen, Deferred<InstalledBehaviour> deferred, BehaviourRecord record) {
+        synchronized (this) {
+            inflight.remove(chosen.symbolicName());
+        }
+        deferred.resolve(dto(record));
+    }
+
+    private void fail(BehaviourResource chosen, Deferred<InstalledBehaviour> deferred, InstallException e) {
+        synchronized (this) {
+            inflight.remove(chosen.symbolicName());
+        }
+        deferred.fail(e);
+    }
+
+    private InstalledBehaviour notInstalled(String symbolicName) {
+        InstalledBehaviour dto = new InstalledBehaviour();
+        dto.symbolicName = symbolicName;
+        dto.state = "UNINSTALLED";
+        dto.bundles = List.of();
+        dto.consumed = List.of();
+        return dto;
+    }
+
+    private InstalledBehaviour dto(BehaviourRecord r) {
+        return Dtos.behaviour(r, context, ledger);
+    }
+
+    private String indexes() {
+        return repositories.status().stream().map(s -> s.url() + " (" + s.resources() + " resources)").toList()
+                .toString();
+    }
+
+    private <T> Promise<T> failed(Problem problem, String message) {
+        return promises.failed(new InstallException(problem, message));
+    }
+}

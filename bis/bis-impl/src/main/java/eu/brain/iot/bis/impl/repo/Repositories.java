@@ -1,0 +1,247 @@
+package eu.brain.iot.bis.impl.repo;
+
+import java.io.IOException;
+import java.net.URI;
+import java.nio.charset.StandardCharsets;
+import java.security.MessageDigest;
+import java.security.NoSuchAlgorithmException;
+import java.util.ArrayList;
+import java.util.HexFormat;
+import java.util.List;
+import java.util.Optional;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.function.Consumer;
+
+import org.osgi.resource.Capability;
+import org.osgi.resource.Requirement;
+
+import eu.brain.iot.bis.sign.IndexSigning;
+
+/**
+ * The configured indexes, each read at start and re-read on change (conditional reads every {@code refreshMillis}),
+ * with retries and exponential backoff while one is unreachable. Each index's content in use is an immutable
+ * {@link IndexSnapshot}, replaced only by a newer index that parsed and (when keys are configured) carries a valid
+ * signature: a refused index leaves the previous one in use.
+ * <p>
+ * Threads: every read runs on the given scheduler (one task per index at a time); each {@link Holder}'s mutable
+ * fields are written only there, and published to other threads through its {@code volatile} snapshot and status.
+ */
+public final class Repositories {
+
+    private final List<Holder> holders = new ArrayList<>();
+    private final TrustedKeys keys;
+    private final UrlReader reader;
+    private final ScheduledExecutorService scheduler;
+    private final long refreshMillis;
+    private final long retryInitialMillis;
+    private final long retryMaxMillis;
+    private final Consumer<String> warn;
+    private final Consumer<String> info;
+    private final CountDownLatch firstAttempts;
+    private final CountDownLatch loaded;
+    private volatile boolean closed;
+
+    public Repositories(List<URI> urls, TrustedKeys keys, UrlReader reader, ScheduledExecutorService scheduler,
+            long refreshMillis, long retryInitialMillis, long retryMaxMillis, Consumer<String> warn,
+            Consumer<String> info) {
+        this.keys = keys;
+        this.reader = reader;
+        this.scheduler = scheduler;
+        this.refreshMillis = Math.max(10, refreshMillis);
+        this.retryInitialMillis = Math.max(1, retryInitialMillis);
+        this.retryMaxMillis = Math.max(this.retryInitialMillis, retryMaxMillis);
+        this.warn = warn;
+        this.info = info;
+        urls.forEach(u -> holders.add(new Holder(u)));
+        this.firstAttempts = new CountDownLatch(holders.size());
+        this.loaded = new CountDownLatch(holders.size());
+    }
+
+    public void start() {
+        holders.forEach(h -> scheduler.execute(() -> read(h)));
+    }
+
+    public void close() {
+        closed = true;
+    }
+
+    /** Waits until every index was tried once (read or failed), at most {@code millis}. */
+    public boolean awaitFirstAttempts(long millis) throws InterruptedException {
+        return firstAttempts.await(millis, TimeUnit.MILLISECONDS);
+    }
+
+    /** Waits until every index has been read successfully once, at most {@code millis}. */
+    public boolean awaitLoaded(long millis) throws InterruptedException {
+        return loaded.await(millis, TimeUnit.MILLISECONDS);
+    }
+
+    /** @return the behaviour and library resources of every index in use, in configuration order */
+    public List<BehaviourResource> resources() {
+        List<BehaviourResource> all = new ArrayList<>();
+        for (Holder h : holders) {
+            IndexSnapshot snapshot = h.snapshot;
+            if (snapshot != null) {
+                all.addAll(snapshot.resources());
+            }
+        }
+        return all;
+    }
+
+    /** @return the capabilities of every index's resources that satisfy the requirement, configuration order */
+    public List<Capability> providers(Requirement requirement) {
+        List<Capability> all = new ArrayList<>();
+        for (Holder h : holders) {
+            IndexSnapshot snapshot = h.snapshot;
+            if (snapshot != null) {
+                all.addAll(snapshot.providers(requirement));
+            }
+        }
+        return all;
+    }
+
+    /** @return the facts of a resource of one of the indexes, if it is one */
+    public Optional<BehaviourResource> facts(org.osgi.resource.Resource resource) {
+        for (Holder h : holders) {
+            IndexSnapshot snapshot = h.snapshot;
+            BehaviourResource facts = snapshot == null ? null : snapshot.facts(resource);
+            if (facts != null) {
+                return Optional.of(facts);
+            }
+        }
+        return Optional.empty();
+    }
+
+    public List<IndexStatus> status() {
+        return holders.stream().map(h -> h.status).toList();
+    }
+
+    /** Re-reads every index now (e.g. {@code bis:repos refresh}). */
+    public void refreshNow() {
+        holders.forEach(h -> scheduler.execute(() -> read(h)));
+    }
+
+    private void read(Holder h) {
+        if (closed) {
+            return;
+        }
+        long now = System.currentTimeMillis();
+        long next = refreshMillis;
+        try {
+            Fetch fetch = reader.fetch(h.url, h.validators);
+            if (fetch instanceof Fetch.Content content) {
+                accept(h, content, now);
+            } else {
+                h.publish(h.signature, 0, null, now);
+            }
+        } catch (IOException e) {
+            int failures = h.status.failures() + 1;
+            next = Math.min(retryMaxMillis, retryInitialMillis << Math.min(20, failures - 1));
+            String message = h.url + " cannot be read (" + e.getMessage() + "); retry " + failures + " in " + next
+                    + " ms" + (h.snapshot == null ? "" : ", the index read before stays in use");
+            if (failures == 1 || Long.bitCount(failures) == 1) {
+                warn.accept(message); // 1st, 2nd, 4th, 8th... failure: visible without flooding the log
+            }
+            h.publish(h.signature, failures, message, now);
+        } catch (IndexException e) {
+            h.publish(h.signature, 0, e.getMessage(), now);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return;
+        } catch (RuntimeException e) {
+            warn.accept(h.url + ": unexpected failure while reading the index: " + e);
+            h.publish(h.signature, h.status.failures() + 1, String.valueOf(e), now);
+        } finally {
+            if (!h.attempted) {
+                h.attempted = true;
+                firstAttempts.countDown();
+            }
+        }
+        if (!closed) {
+            scheduler.schedule(() -> read(h), next, TimeUnit.MILLISECONDS);
+        }
+    }
+
+    /** Checks the signature and parses; only then replaces the snapshot. */
+    private void accept(Holder h, Fetch.Content content, long now) throws IOException, InterruptedException,
+            IndexException {
+        String digest = sha256(content.bytes());
+        String signature = "not checked (no trusted.keys configured)";
+        if (keys.enabled()) {
+            URI sigUrl = URI.create(h.url + IndexSigning.SUFFIX);
+            Optional<byte[]> sig = reader.readIfPresent(sigUrl);
+            int key = sig.isEmpty() ? -1 : keys.verify(content.bytes(), new String(sig.get(), StandardCharsets.US_ASCII));
+            if (key < 0) {
+                String problem = sig.isEmpty() ? "has no signature file " + sigUrl
+                        : "has a signature " + sigUrl + " that no trusted key verifies";
+                String message = "index " + h.url + " REFUSED: it " + problem + " (trusted keys: " + keys.describe()
+                        + "). " + (h.snapshot == null ? "No index from this URL is in use"
+                                : "The index read before stays in use")
+                        + ". Sign the index with the private key of a trusted key (sign-index, see repository/README.md)"
+                        + " or add its public key to trusted.keys of eu.brain.iot.bis.";
+                if (!digest.equals(h.refusedDigest)) {
+                    warn.accept(message); // once per refused content, not at every refresh
+                    h.refusedDigest = digest;
+                }
+                h.publish("REFUSED: " + problem, 0, message, now);
+                return;
+            }
+            signature = "valid (key " + keys.describe(key) + ")";
+        }
+        IndexSnapshot snapshot;
+        try {
+            snapshot = new IndexSnapshot(h.url, IndexParser.parse(content.bytes(), h.url));
+        } catch (IndexException e) {
+            if (!digest.equals(h.refusedDigest)) {
+                warn.accept(e.getMessage() + (h.snapshot == null ? "" : "; the index read before stays in use"));
+                h.refusedDigest = digest;
+            }
+            throw e;
+        }
+        if (h.snapshot == null) {
+            loaded.countDown();
+        }
+        h.validators = content.validators();
+        h.refusedDigest = null;
+        h.snapshot = snapshot;
+        h.readAt = now;
+        info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
+        h.publish(signature, 0, null, now);
+    }
+
+    private static String sha256(byte[] bytes) {
+        try {
+            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes));
+        } catch (NoSuchAlgorithmException e) {
+            throw new IllegalStateException(e);
+        }
+    }
+
+    /** One index. Mutable fields: written on the scheduler only. */
+    private static final class Holder {
+        final URI url;
+        volatile IndexSnapshot snapshot;
+        volatile IndexStatus status;
+        Fetch.Validators validators = Fetch.Validators.NONE;
+        String refusedDigest;
+        String signature = "-";
+        long readAt;
+        boolean attempted;
+
+        Holder(URI url) {
+            this.url = url;
+            this.status = new IndexStatus(url.toString(), 0, 0, 0, 0, "-", 0, null);
+        }
+
+        void publish(String signatureState, int failures, String error, long checkedAt) {
+            if (!signatureState.startsWith("REFUSED")) {
+                signature = signatureState;
+            }
+            IndexSnapshot s = snapshot;
+            int behaviours = s == null ? 0 : (int) s.resources().stream().filter(BehaviourResource::isBehaviour).count();
+            status = new IndexStatus(url.toString(), s == null ? 0 : s.resources().size(), behaviours, readAt,
+                    checkedAt, signatureState, failures, error);
+        }
+    }
+}
