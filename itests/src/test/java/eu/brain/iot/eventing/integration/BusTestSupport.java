@@ -1,13 +1,18 @@
 package eu.brain.iot.eventing.integration;
 
+import static org.awaitility.Awaitility.await;
+
+import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Hashtable;
 import java.util.List;
 
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceReference;
 import org.osgi.framework.ServiceRegistration;
 
 import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
+import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 
@@ -15,6 +20,20 @@ import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 final class BusTestSupport implements AutoCloseable {
     private final BundleContext context;
     private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
+
+    /**
+     * Wait until the bus has applied a configuration change in place: Declarative Services calls the bus's
+     * modified method first, then updates its service properties, so seeing the property means it is applied.
+     *
+     * @param value the expected value of the property, or {@code null} when the configuration was deleted
+     */
+    static void awaitBusProperty(BundleContext context, String key, Object value) {
+        await().atMost(Duration.ofSeconds(10)).until(() -> {
+            ServiceReference<EventBus> ref = context.getServiceReference(EventBus.class);
+            return ref != null && (value == null ? ref.getProperty(key) == null
+                    : String.valueOf(value).equals(String.valueOf(ref.getProperty(key))));
+        });
+    }
 
     BusTestSupport(BundleContext context) {
         this.context = context;

@@ -35,7 +35,7 @@ class DeliveryWorkersIntegrationTest {
 
     @Test
     void withOneDeliveryWorkerABlockedBehaviourStillDelaysNobody() throws Exception {
-        long oldBus = busServiceId();
+        long bus0 = busServiceId();
         Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("delivery.workers", 1);
@@ -44,10 +44,11 @@ class DeliveryWorkersIntegrationTest {
         BusTestSupport behaviours = new BusTestSupport(context);
         GatedBehaviour blocked = new GatedBehaviour();
         try {
-            await().atMost(DEADLINE).until(() -> busServiceId() != oldBus && busServiceId() != -1);
+            BusTestSupport.awaitBusProperty(context, "delivery.workers", 1);
+            assertThat(busServiceId()).as("the configuration is applied in place").isEqualTo(bus0);
             EventBus bus = context.getService(context.getServiceReference(EventBus.class)); // activates it
             EventBusStatistics stats = context.getService(context.getServiceReference(EventBusStatistics.class));
-            // the previous bus's workers have ended; the new one has the configured single worker
+            // the surplus workers retire once idle: the configured single worker remains
             await().atMost(DEADLINE).untilAsserted(() -> assertThat(workerThreads()).hasSize(1));
 
             int baseline = stats.consumers().size();
@@ -73,9 +74,8 @@ class DeliveryWorkersIntegrationTest {
         } finally {
             blocked.open();
             behaviours.close();
-            long configuredBus = busServiceId();
             config.delete();
-            await().atMost(DEADLINE).until(() -> busServiceId() != configuredBus && busServiceId() != -1);
+            BusTestSupport.awaitBusProperty(context, "delivery.workers", null);
         }
     }
 

@@ -33,7 +33,7 @@ class OverflowIntegrationTest {
 
     @Test
     void aFullQueueMakesDeliverWaitThenThrowWithoutPartialDelivery() throws Exception {
-        long oldBus = busServiceId();
+        long bus0 = busServiceId();
         Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("queue.capacity", 10);
@@ -41,7 +41,8 @@ class OverflowIntegrationTest {
         config.update(props);
         BusTestSupport behaviours = new BusTestSupport(context);
         try {
-            await().atMost(DEADLINE).until(() -> busServiceId() != oldBus);
+            BusTestSupport.awaitBusProperty(context, "queue.capacity", 10);
+            assertThat(busServiceId()).as("the configuration is applied in place").isEqualTo(bus0);
             EventBus bus = context.getService(context.getServiceReference(EventBus.class));
             EventBusStatistics stats = context.getService(context.getServiceReference(EventBusStatistics.class));
 
@@ -71,9 +72,8 @@ class OverflowIntegrationTest {
             assertThat(fast.events).extracting(e -> ((PositionEvent) e).seq).doesNotContain(11L);
         } finally {
             behaviours.close();
-            long configuredBus = busServiceId();
             config.delete();
-            await().atMost(DEADLINE).until(() -> busServiceId() != configuredBus && busServiceId() != -1);
+            BusTestSupport.awaitBusProperty(context, "queue.capacity", null);
         }
     }
 
