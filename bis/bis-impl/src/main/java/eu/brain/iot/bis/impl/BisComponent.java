@@ -17,6 +17,7 @@ import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.log.Logger;
@@ -43,7 +44,7 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * Threads: the installer's thread ({@code brain-iot-bis}) runs installs; {@code brain-iot-bis-repos} reads indexes;
  * {@code brain-iot-bis-callbacks} runs promise callbacks. {@link #registrations} is guarded by {@code this}.
  */
-@Component(configurationPid = BisComponent.PID, immediate = true)
+@Component(configurationPid = BisComponent.PID, configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)
 @Designate(ocd = BisConfig.class)
 public final class BisComponent {
 
