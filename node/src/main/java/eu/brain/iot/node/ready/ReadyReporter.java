@@ -51,6 +51,13 @@ public final class ReadyReporter {
 
     /** Framework (or system) property: stop the node and exit once the ready line is printed. */
     public static final String EXIT_WHEN_READY = "fabric.node.exitWhenReady";
+    /**
+     * Framework (or system) property: service interfaces (comma-separated) that must be registered, besides the
+     * bus, before the ready line. The node's bndrun names the Bundle Installer, which registers its service only
+     * once it has put back what its journal lists, and the Behaviour Management Service's policy: so a node that
+     * says it is ready has its behaviours back and installs missing ones on demand.
+     */
+    public static final String READY_SERVICES = "fabric.node.ready.services";
 
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
@@ -66,6 +73,9 @@ public final class ReadyReporter {
             launched();
         }
     };
+    /** Any registration or unregistration of a {@link #READY_SERVICES} service: look again. */
+    private final ServiceListener readyServicesListener = event -> reportIfReady();
+    private final List<String> readyServices;
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
@@ -86,6 +96,12 @@ public final class ReadyReporter {
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
         this.context = context;
+        this.readyServices = readyServices(context.getProperty(READY_SERVICES));
+        if (!readyServices.isEmpty()) {
+            StringBuilder filter = new StringBuilder("(|");
+            readyServices.forEach(name -> filter.append("(objectClass=").append(name).append(')'));
+            context.addServiceListener(readyServicesListener, filter.append(')').toString());
+        }
         context.addFrameworkListener(frameworkListener);
         context.addServiceListener(launcherListener, LAUNCHER_READY);
         if (context.getServiceReferences((String) null, LAUNCHER_READY) != null) {
@@ -96,6 +112,7 @@ public final class ReadyReporter {
     @Deactivate
     void deactivate() {
         context.removeServiceListener(launcherListener);
+        context.removeServiceListener(readyServicesListener);
         context.removeFrameworkListener(frameworkListener);
     }
 
@@ -122,7 +139,7 @@ public final class ReadyReporter {
 
     private void reportIfReady() {
         synchronized (this) {
-            if (reported || buses == 0 || !launched) {
+            if (reported || buses == 0 || !launched || !readyServicesUp()) {
                 return;
             }
             reported = true;
@@ -131,8 +148,8 @@ public final class ReadyReporter {
         Bundle[] bundles = context.getBundles();
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles installed); %s%n",
-                    sinceJvmStart, bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+            System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
+                    sinceJvmStart, readyServices.isEmpty() ? "" : " and " + describe(readyServices), bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -163,6 +180,26 @@ public final class ReadyReporter {
         } else {
             levelReached();
         }
+    }
+
+    static List<String> readyServices(String property) {
+        if (property == null || property.isBlank()) {
+            return List.of();
+        }
+        return Arrays.stream(property.split(",")).map(String::trim).filter(n -> !n.isEmpty()).toList();
+    }
+
+    private boolean readyServicesUp() {
+        for (String name : readyServices) {
+            try {
+                if (context.getServiceReferences(name, null) == null) {
+                    return false;
+                }
+            } catch (InvalidSyntaxException | IllegalStateException e) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
@@ -203,6 +240,19 @@ public final class ReadyReporter {
         }
     }
 
+    /** How the ready line names what it waited for besides the bus. */
+    static String describe(List<String> services) {
+        List<String> names = new java.util.ArrayList<>();
+        for (String service : services) {
+            names.add(switch (service) {
+            case "eu.brain.iot.bis.api.BundleInstaller" -> "behaviour installer (journal restored)";
+            case "eu.brain.iot.eventing.spi.UnhandledEventPolicy" -> "behaviour management";
+            default -> service.substring(service.lastIndexOf('.') + 1);
+            });
+        }
+        return String.join(" and ", names);
+    }
+
     /**
      * The end of the ready line: what to type, and how to stop the node. Without an interactive shell (the Gogo
      * shell's {@code --nointeractive}, as {@code ./fabric-node --no-shell} sets) there is nothing to type into:
@@ -215,7 +265,7 @@ public final class ReadyReporter {
         if (shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE)) {
             return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
         }
-        return "try bus:behaviours, bus:stats, edge:robots, lb, scr:list; 'stop 0' quits";
+        return "try bus:behaviours, bus:publish, bis:list, bms:pending, edge:robots, lb; 'stop 0' quits";
     }
 
     private void exitWith(int status) {
