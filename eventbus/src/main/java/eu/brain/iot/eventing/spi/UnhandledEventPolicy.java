@@ -9,9 +9,15 @@ import org.osgi.annotation.versioning.ConsumerType;
  * service by a Behaviour Management Service; the bus follows the highest-ranked one. Without any policy the bus
  * behaves as before: consumers of last resort, else counted as unhandled.
  * <p>
- * Threading: {@link #unhandled} is called on the publisher's thread, for every such event, while the bus may
- * hold an internal lock: it must answer at once (a map look-up), must not block, must not do I/O and must not
- * publish on the bus. Work such as searching a repository belongs on the policy's own threads.
+ * Threading: {@link #unhandled} and {@link #maxHeldEvents} are called on the publisher's thread, for every such
+ * event, while the publisher waits for the answer (the bus holds none of its locks then): they must answer at once
+ * (a map look-up), must not block, must not do I/O and must not publish on the bus (an event published from
+ * within {@link #unhandled} is not put to the policy again: it follows the bus's own rules). Work such as
+ * searching a repository belongs on the policy's own threads. An exception thrown here is logged once and the
+ * event follows the bus's own rules ({@link Disposition#LAST_RESORT}); so does a {@code null} answer.
+ * <p>
+ * When the policy service goes away, the events it held follow the bus's own rules (consumers of last resort, else
+ * counted as unhandled), in hold order; when a higher-ranked policy replaces it, the hold stays as it is.
  */
 @ConsumerType
 public interface UnhandledEventPolicy {
@@ -19,13 +25,16 @@ public interface UnhandledEventPolicy {
     /**
      * @param eventType the event's fully qualified type name
      * @param typeHierarchy the type name first, then its superclasses and all its interfaces (as the bus matches
-     *        behaviours), excluding {@code java.lang.Object}; for an untyped event only its type name
+     *        behaviours), excluding {@code java.lang.Object}; so it also names {@code BrainIoTEvent},
+     *        {@code org.osgi.dto.DTO} and {@code java.lang.Cloneable}, which a policy will usually not search for;
+     *        for an untyped event only its type name
      * @return what to do with this event
      */
     Disposition unhandled(String eventType, List<String> typeHierarchy);
 
     /**
-     * @return how many events the bus may hold for this policy, all types together; when the hold is full a
+     * @return how many events the bus may hold for this policy, all types together (at least 1; read each time an
+     *         event is to be held, so it may change); when the hold is full a
      *         publisher of an event to be held waits as for a full behaviour queue (the bus's overflow timeout),
      *         then gets an {@code EventBusOverflowException}
      */

@@ -75,7 +75,7 @@ class DeliveryWorkersIntegrationTest {
             blocked.open();
             behaviours.close();
             config.delete();
-            BusTestSupport.awaitBusProperty(context, "delivery.workers", null);
+            BusTestSupport.awaitBusProperty(context, "delivery.workers", 0); // the default again
         }
     }
 

@@ -125,7 +125,8 @@ class HoldIntegrationTest {
         }
         threads.forEach(Thread::start);
         start.countDown();
-        await().atMost(DEADLINE).until(() -> published.get() >= 2_000); // some held before the install
+        await().atMost(DEADLINE).until(() -> published.get() >= 2_000);
+        assertThat(heldEvents.held().get(0).count).as("events held before the install").isGreaterThanOrEqualTo(2_000);
         installed = TestBundles.install(context, "tb.held.consumer", HoldConsumerActivator.class, HoldEvent.class);
         for (Thread t : threads) {
             t.join(DEADLINE.toMillis());

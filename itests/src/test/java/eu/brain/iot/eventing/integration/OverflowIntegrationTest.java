@@ -73,7 +73,7 @@ class OverflowIntegrationTest {
         } finally {
             behaviours.close();
             config.delete();
-            BusTestSupport.awaitBusProperty(context, "queue.capacity", null);
+            BusTestSupport.awaitBusProperty(context, "queue.capacity", 65536); // the default again
         }
     }
 

@@ -77,7 +77,8 @@ class ReconfigurationIntegrationTest {
             blocked.open();
             behaviours.close();
             config.delete();
-            BusTestSupport.awaitBusProperty(context, "delivery.workers", null);
+            BusTestSupport.awaitBusProperty(context, "delivery.workers", 0); // the default again, same bus
+            assertThat(busServiceId()).isEqualTo(busId);
         }
     }
 

@@ -41,7 +41,7 @@ final class InMemoryCompiler {
         }
         String classpath = String.join(java.io.File.pathSeparator, location(eu.brain.iot.eventing.api.BrainIoTEvent.class),
                 location(org.osgi.service.component.annotations.Component.class),
-                location(org.osgi.annotation.bundle.Capability.class));
+                location(org.osgi.annotation.bundle.Capability.class), location(org.osgi.dto.DTO.class));
         try (StandardJavaFileManager fm = javac.getStandardFileManager(diagnostics, Locale.ROOT, null)) {
             Files.createDirectories(out);
             boolean ok = javac.getTask(null, fm, diagnostics, List.of("-d", out.toString(), "-cp", classpath,
