@@ -51,8 +51,11 @@ public final class BisCommands {
                         .append(d.bundleId).append(", used by ").append(d.users).append(")\n");
             }
         }
-        installer.pending().forEach(p -> out.append("journal, not back yet: ").append(p.symbolicName()).append(' ')
-                .append(p.version()).append('\n'));
+        installer.pending().forEach(p -> {
+            String problem = installer.restoreProblem(p.symbolicName());
+            out.append("journal, not back yet: ").append(p.symbolicName()).append(' ').append(p.version())
+                    .append(problem == null ? "" : "\n    problem: " + problem).append('\n');
+        });
         for (Map.Entry<String, String> e : installer.blocked().entrySet()) {
             out.append("removed by an operator: ").append(e.getKey()).append(" (").append(e.getValue())
                     .append("); 'bis:allow ").append(e.getKey()).append("' lifts it\n");

@@ -42,7 +42,12 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * change restarts it (the journal keeps what is installed; installed bundles stay).
  * <p>
  * Threads: the installer's thread ({@code brain-iot-bis}) runs installs; {@code brain-iot-bis-repos} reads indexes;
- * {@code brain-iot-bis-callbacks} runs promise callbacks. {@link #registrations} is guarded by {@code this}.
+ * {@code brain-iot-bis-callbacks} runs promise callbacks; {@code brain-iot-bis-start} restores the journal and
+ * registers the services. {@link #registrations} and {@link #closed} are guarded by {@code this}.
+ * <p>
+ * A configuration that cannot be used (a trusted key that is no key, a URL that is no URL, a journal line that
+ * cannot be read) is logged as one error saying what and where, and the installer does not run: a bad key must never
+ * silently turn signature checks off.
  */
 @Component(configurationPid = BisComponent.PID, configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)
 @Designate(ocd = BisConfig.class)
@@ -51,18 +56,32 @@ public final class BisComponent {
     public static final String PID = "eu.brain.iot.bis";
 
     private final Logger log;
-    private final Repositories repositories;
-    private final Installer installer;
-    private final ScheduledExecutorService scheduler;
-    private final ExecutorService callbacks;
-    private final ServiceTracker<EventBusStatistics, EventBusStatistics> statistics;
+    /** Null when the configuration is unusable: then nothing runs and the log says why. */
+    private final Parts parts;
     private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
     private boolean closed;
 
+    /** What a running installer consists of. */
+    private record Parts(Repositories repositories, Installer installer, ScheduledExecutorService scheduler,
+            ExecutorService callbacks, ServiceTracker<EventBusStatistics, EventBusStatistics> statistics) {
+    }
+
     @Activate
     public BisComponent(BundleContext context, BisConfig config, @Reference Resolver resolver,
-            @Reference(service = LoggerFactory.class) Logger log) throws IOException {
+            @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
+        Parts started = null;
+        try {
+            started = start(context, config, resolver);
+        } catch (IllegalArgumentException | IOException e) {
+            // a bad key or URL must not silently turn verification off: the installer does not run at all
+            log.error("Bundle Installer NOT started, its configuration ({}) or journal is unusable: {}", PID,
+                    e.getMessage());
+        }
+        this.parts = started;
+    }
+
+    private Parts start(BundleContext context, BisConfig config, Resolver resolver) throws IOException {
         TrustedKeys keys = TrustedKeys.of(config.trusted_keys());
         List<URI> urls = new ArrayList<>();
         for (String url : config.repositories()) {
@@ -71,14 +90,17 @@ public final class BisComponent {
             }
         }
         Path journalDir = journalDir(context, config);
+        Journal journal = new Journal(journalDir);
+        Journal.State loaded = journal.load(); // a broken journal stops here, before any thread starts
         UrlReader reader = new UrlReader(Duration.ofMillis(Math.max(100, config.download_timeout_ms())));
-        this.scheduler = Executors.newSingleThreadScheduledExecutor(named("brain-iot-bis-repos"));
-        this.callbacks = Executors.newSingleThreadExecutor(named("brain-iot-bis-callbacks"));
-        this.repositories = new Repositories(urls, keys, reader, scheduler, config.refresh_ms(),
+        ScheduledExecutorService scheduler = Executors.newSingleThreadScheduledExecutor(named("brain-iot-bis-repos"));
+        ExecutorService callbacks = Executors.newSingleThreadExecutor(named("brain-iot-bis-callbacks"));
+        Repositories repositories = new Repositories(urls, keys, reader, scheduler, config.refresh_ms(),
                 config.retry_initial_ms(), config.retry_max_ms(), log::warn, log::info);
-        this.statistics = new ServiceTracker<>(context, EventBusStatistics.class, null);
-        this.statistics.open();
-        this.installer = Installer.create(context, resolver, repositories, reader, new Journal(journalDir),
+        ServiceTracker<EventBusStatistics, EventBusStatistics> statistics = new ServiceTracker<>(context,
+                EventBusStatistics.class, null);
+        statistics.open();
+        Installer installer = Installer.create(context, resolver, repositories, reader, journal, loaded,
                 Arrays.asList(config.prefer()), Math.max(1, config.activation_timeout_ms()), statistics::getService,
                 Executors.newSingleThreadExecutor(named("brain-iot-bis")), new PromiseFactory(callbacks, scheduler),
                 log::error, log::warn, log::info);
@@ -87,22 +109,28 @@ public final class BisComponent {
             log.warn("Bundle Installer: no repositories configured (repositories of {}): nothing can be installed",
                     PID);
         }
+        if (!keys.enabled()) {
+            log.warn("Bundle Installer: no trusted.keys configured: index signatures are not checked (bundle"
+                    + " hashes still are)");
+        }
+        Parts parts = new Parts(repositories, installer, scheduler, callbacks, statistics);
+        repositories.onChange(installer::retryPending);
         repositories.start();
         long restoreTimeout = Math.max(0, config.restore_timeout_ms());
-        Thread starter = named("brain-iot-bis-start").newThread(() -> start(context, restoreTimeout));
-        starter.start();
+        named("brain-iot-bis-start").newThread(() -> restoreThenRegister(context, parts, restoreTimeout)).start();
+        return parts;
     }
 
     /** Waits for the indexes' first reads, restores the journal, then offers the service and the commands. */
-    private void start(BundleContext context, long restoreTimeoutMillis) {
+    private void restoreThenRegister(BundleContext context, Parts parts, long restoreTimeoutMillis) {
         long deadline = System.currentTimeMillis() + restoreTimeoutMillis;
         try {
-            if (!installer.pending().isEmpty()) {
-                repositories.awaitLoaded(restoreTimeoutMillis);
+            if (!parts.installer().pending().isEmpty()) {
+                parts.repositories().awaitLoaded(restoreTimeoutMillis);
                 long left = deadline - System.currentTimeMillis();
-                if (installer.restore().timeout(Math.max(1, left)).getFailure() != null) {
+                if (parts.installer().restore().timeout(Math.max(1, left)).getFailure() != null) {
                     log.warn("Bundle Installer: the journal's behaviours are not all back after {} ms; offering the"
-                            + " service anyway, they keep being installed", restoreTimeoutMillis);
+                            + " service anyway, the restore goes on", restoreTimeoutMillis);
                 }
             }
         } catch (InterruptedException e) {
@@ -111,20 +139,20 @@ public final class BisComponent {
         } catch (RuntimeException e) {
             log.error("Bundle Installer: restoring the journal failed: {}", e.toString());
         }
-        register(context);
+        register(context, parts);
     }
 
-    private synchronized void register(BundleContext context) {
+    private synchronized void register(BundleContext context, Parts parts) {
         if (closed) {
             return;
         }
         try {
-            registrations.add(context.registerService(BundleInstaller.class, installer, null));
+            registrations.add(context.registerService(BundleInstaller.class, parts.installer(), null));
             Hashtable<String, Object> props = new Hashtable<>();
             props.put("osgi.command.scope", "bis");
             props.put("osgi.command.function", new String[] { "list", "install", "uninstall", "allow", "repos" });
             registrations.add(context.registerService(BisCommands.class,
-                    new BisCommands(installer, repositories), props));
+                    new BisCommands(parts.installer(), parts.repositories()), props));
         } catch (IllegalStateException e) {
             // the bundle is stopping: nothing to offer
         }
@@ -143,11 +171,13 @@ public final class BisComponent {
             }
             registrations.clear();
         }
-        repositories.close();
-        installer.close();
-        scheduler.shutdownNow();
-        callbacks.shutdownNow();
-        statistics.close();
+        if (parts != null) {
+            parts.repositories().close();
+            parts.installer().close();
+            parts.scheduler().shutdownNow();
+            parts.callbacks().shutdownNow();
+            parts.statistics().close();
+        }
     }
 
     private static URI parse(String url) {

@@ -110,6 +110,26 @@ abstract class BisTestBase {
         return currentInstaller();
     }
 
+    /** Configures the installer without waiting for its service (which a bad configuration never brings). */
+    void configureOnly(Map<String, Object> settings) throws IOException {
+        if (configuration == null) {
+            configuration = configAdmin.getConfiguration(PID, "?");
+        }
+        configuration.update(new Hashtable<>(settings));
+    }
+
+    /** @return the messages the log service holds, newest first */
+    List<String> logMessages() {
+        ServiceReference<org.osgi.service.log.LogReaderService> ref = context
+                .getServiceReference(org.osgi.service.log.LogReaderService.class);
+        List<String> messages = new java.util.ArrayList<>();
+        java.util.Enumeration<org.osgi.service.log.LogEntry> log = context.getService(ref).getLog();
+        while (log.hasMoreElements()) {
+            messages.add(log.nextElement().getMessage());
+        }
+        return messages;
+    }
+
     /** Removes the configuration: the installer goes away (its bundles stay, as they would until a node restart). */
     void unconfigure() throws IOException {
         configuration.delete();

@@ -55,16 +55,18 @@ public final class Installer implements BundleInstaller {
     private final Consumer<String> warn;
     private final Consumer<String> info;
     private final Map<String, Promise<InstalledBehaviour>> inflight = new HashMap<>();
+    /** Why a journal entry is not back: written on the installer's thread, read by Gogo. */
+    private final Map<String, String> restoreProblems = new java.util.concurrent.ConcurrentHashMap<>();
     private boolean closed;
+    /** Set on the installer's thread once the start's restore ran; read by the index reader's thread. */
+    private volatile boolean restored;
 
-    /**
-     * @throws java.io.IOException when the journal cannot be read (the message names the file and line)
-     */
+    /** @param loaded what the journal held at start */
     public static Installer create(BundleContext context, Resolver resolver, Repositories repositories,
-            UrlReader reader, Journal journal, List<String> prefer, long activationTimeoutMillis,
+            UrlReader reader, Journal journal, Journal.State loaded, List<String> prefer, long activationTimeoutMillis,
             Supplier<EventBusStatistics> statistics, ExecutorService executor, PromiseFactory promises,
-            Consumer<String> error, Consumer<String> warn, Consumer<String> info) throws java.io.IOException {
-        Ledger ledger = new Ledger(journal, journal.load(), error);
+            Consumer<String> error, Consumer<String> warn, Consumer<String> info) {
+        Ledger ledger = new Ledger(journal, loaded, error);
         Activation activation = new Activation(context, statistics);
         Transaction transaction = new Transaction(context, resolver, repositories, reader, activation,
                 activationTimeoutMillis, warn);
@@ -184,6 +186,11 @@ public final class Installer implements BundleInstaller {
         return ledger.blocked();
     }
 
+    /** @return why a journal entry could not be installed again, or null */
+    public String restoreProblem(String symbolicName) {
+        return restoreProblems.get(symbolicName);
+    }
+
     /** Journal entries not installed again (yet) since the start. */
     public List<BehaviourRecord> pending() {
         return ledger.pending();
@@ -196,22 +203,46 @@ public final class Installer implements BundleInstaller {
     public Promise<Void> restore() {
         Deferred<Void> done = promises.deferred();
         executor.execute(() -> {
-            for (BehaviourRecord r : ledger.pending()) {
-                try {
-                    restore(r);
-                } catch (InstallException e) {
-                    warn.accept("the journal lists " + r.symbolicName() + " " + r.version() + " (installed because: "
-                            + r.reason() + "), which could not be installed again: " + e.getMessage()
-                            + "; it stays in the journal and is tried again at the next start");
-                } catch (InterruptedException e) {
-                    break;
-                } catch (RuntimeException e) {
-                    warn.accept("restoring " + r.symbolicName() + " from the journal failed: " + e);
-                }
-            }
+            restorePending();
+            restored = true;
             done.resolve(null);
         });
         return done.getPromise();
+    }
+
+    /**
+     * Tries the journal entries that are not back again (called when an index was read anew: the version they need
+     * may be offered now, or an unreachable repository answered). Does nothing before {@link #restore()} ran.
+     */
+    public void retryPending() {
+        if (restored && !ledger.pending().isEmpty()) {
+            try {
+                executor.execute(this::restorePending);
+            } catch (RejectedExecutionException e) {
+                // stopping
+            }
+        }
+    }
+
+    private void restorePending() {
+        for (BehaviourRecord r : ledger.pending()) {
+            try {
+                restore(r);
+                restoreProblems.remove(r.symbolicName());
+            } catch (InstallException e) {
+                if (!e.getMessage().equals(restoreProblems.put(r.symbolicName(), e.getMessage()))) {
+                    warn.accept("the journal lists " + r.symbolicName() + " " + r.version() + " (installed because: "
+                            + r.reason() + "), which could not be installed again: " + e.getMessage()
+                            + "; it stays in the journal and is tried again when an index changes and at the next"
+                            + " start");
+                }
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            } catch (RuntimeException e) {
+                warn.accept("restoring " + r.symbolicName() + " from the journal failed: " + e);
+            }
+        }
     }
 
     public void close() {

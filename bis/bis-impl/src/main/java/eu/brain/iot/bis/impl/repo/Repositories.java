@@ -42,6 +42,7 @@ public final class Repositories {
     private final CountDownLatch firstAttempts;
     private final CountDownLatch loaded;
     private volatile boolean closed;
+    private volatile Runnable onChange = () -> { };
 
     public Repositories(List<URI> urls, TrustedKeys keys, UrlReader reader, ScheduledExecutorService scheduler,
             long refreshMillis, long retryInitialMillis, long retryMaxMillis, Consumer<String> warn,
@@ -57,6 +58,11 @@ public final class Repositories {
         urls.forEach(u -> holders.add(new Holder(u)));
         this.firstAttempts = new CountDownLatch(holders.size());
         this.loaded = new CountDownLatch(holders.size());
+    }
+
+    /** @param listener called on the reader's thread after an index's content in use was replaced */
+    public void onChange(Runnable listener) {
+        this.onChange = listener;
     }
 
     public void start() {
@@ -199,15 +205,17 @@ public final class Repositories {
             }
             throw e;
         }
-        if (h.snapshot == null) {
-            loaded.countDown();
-        }
+        boolean first = h.snapshot == null;
         h.validators = content.validators();
         h.refusedDigest = null;
         h.snapshot = snapshot;
         h.readAt = now;
         info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
         h.publish(signature, 0, null, now);
+        if (first) {
+            loaded.countDown(); // after the snapshot is in place: a waiting journal restore reads it at once
+        }
+        onChange.run();
     }
 
     private static String sha256(byte[] bytes) {
