@@ -98,7 +98,7 @@ final class BehaviourManager {
         }
         counters.unhandled.increment();
         if (settings.ignored(eventType)) {
-            return Disposition.UNHANDLED;
+            return Disposition.LAST_RESORT;
         }
         long now = scheduler.now();
         while (true) {
@@ -123,8 +123,8 @@ final class BehaviourManager {
     }
 
     /**
-     * Ask the installer for candidates. A resolved answer is used at once (a miss answers UNHANDLED to this very
-     * event); otherwise the events are held until the answer arrives on the BMS's thread. Runs on a publisher's
+     * Ask the installer for candidates. A resolved answer is used at once (a miss answers LAST_RESORT to this very
+     * event: consumers of last resort, else counted as unhandled); otherwise the events are held until the answer arrives on the BMS's thread. Runs on a publisher's
      * thread or on the BMS's.
      */
     private Disposition search(String eventType, Searching searching) {
@@ -144,7 +144,7 @@ final class BehaviourManager {
                 if (states.replace(eventType, searching, rest)) {
                     scheduler.execute(() -> notFound(eventType, rest));
                 }
-                return Disposition.UNHANDLED;
+                return Disposition.LAST_RESORT;
             }
             BehaviourCandidate best = candidates.get(0);
             scheduler.execute(() -> install(eventType, searching, best));

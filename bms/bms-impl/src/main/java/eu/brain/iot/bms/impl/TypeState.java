@@ -61,7 +61,11 @@ sealed interface TypeState {
         }
     }
 
-    /** Events are counted as unhandled, not held, until {@code until}; then a new episode starts. */
+    /**
+     * Events are not held and no search is made until {@code until}; then a new episode starts. They go to the
+     * consumers of last resort if there are any (a dashboard, a logger), else the bus counts them as unhandled:
+     * either way the publisher never waits for an install.
+     */
     record Resting(List<String> searched, long since, Rest kind, String behaviour, long until, String reason,
             LongAdder unhandled) implements TypeState {
         @Override
@@ -70,7 +74,7 @@ sealed interface TypeState {
                 return null;
             }
             unhandled.increment();
-            return Disposition.UNHANDLED;
+            return Disposition.LAST_RESORT;
         }
     }
 

@@ -85,7 +85,7 @@ class BehaviourManagerTest {
 
     @Test
     void aTypeNoRepositoryHasIsUnhandledAtOnceAlertedOnceAndNotSearchedAgainUntilTheCacheExpires() {
-        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.LAST_RESORT);
         for (int i = 0; i < 100_000; i++) {
             bus.publish(bms, NOBODY);
         }
@@ -106,7 +106,7 @@ class BehaviourManagerTest {
         assertThat(pending.unhandledEvents).isEqualTo(100_001);
 
         clock.advance(60_000); // the negative cache expires: the next event searches again
-        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.LAST_RESORT);
         clock.runDue();
         assertThat(installer.finds).hasValue(2);
         assertThat(alerts.of(BehaviourNotFound.class)).hasSize(2);
@@ -120,7 +120,7 @@ class BehaviourManagerTest {
         assertThat(bms.unhandled("x.MyAlert", List.of("x.MyAlert", BehaviourInstallFailed.class.getName())))
                 .isEqualTo(Disposition.LAST_RESORT);
         assertThat(bms.unhandled("eu.brain.iot.ignored.Tick", List.of("eu.brain.iot.ignored.Tick")))
-                .isEqualTo(Disposition.UNHANDLED);
+                .isEqualTo(Disposition.LAST_RESORT);
         assertThat(installer.finds).hasValue(0);
     }
 
@@ -181,7 +181,7 @@ class BehaviourManagerTest {
         assertThat(last.finalFailure).isTrue();
         assertThat(last.heldEvents).isEqualTo(2);
         assertThat(counters.snapshot().discardedEvents).isEqualTo(2);
-        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.LAST_RESORT);
         assertThat(log.count("error", "Gave up installing")).isEqualTo(1);
         int requests = installer.requests.size();
         clock.advance(30_000);
@@ -197,7 +197,7 @@ class BehaviourManagerTest {
         clock.advance(30_000);
 
         assertThat(installer.requests).hasSize(1);
-        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.LAST_RESORT);
         assertThat(bus.discards).singleElement().asString().contains("operator");
         assertThat(alerts.of(BehaviourInstallFailed.class).get(0).finalFailure).isTrue();
         assertThat(pendingOf(DOOR_EVENT).state).isEqualTo("REMOVED_BY_OPERATOR");
@@ -250,7 +250,7 @@ class BehaviourManagerTest {
 
         assertThat(bus.count(DOOR_EVENT)).isZero();
         assertThat(bus.discards).singleElement().asString().contains("does not take");
-        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.LAST_RESORT);
         assertThat(installer.requests).hasSize(1);
     }
 
@@ -267,7 +267,7 @@ class BehaviourManagerTest {
         assertThat(alerts.of(BehaviourNotFound.class)).singleElement().extracting(a -> a.heldEvents).isEqualTo(7);
         assertThat(bms.history()).singleElement().extracting(e -> e.kind, e -> e.heldEvents)
                 .containsExactly("NOT_FOUND", 7);
-        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.UNHANDLED);
+        assertThat(bus.publish(bms, NOBODY)).isEqualTo(Disposition.LAST_RESORT);
     }
 
     @Test

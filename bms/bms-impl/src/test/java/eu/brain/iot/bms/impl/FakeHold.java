@@ -35,8 +35,7 @@ final class FakeHold implements HeldEvents {
             h.since = 1;
             return h;
         }).count++;
-        case UNHANDLED -> unhandled++;
-        case LAST_RESORT -> lastResort++;
+        case UNHANDLED, LAST_RESORT -> unhandled++; // no consumer of last resort here: counted as unhandled
         }
         return d;
     }
