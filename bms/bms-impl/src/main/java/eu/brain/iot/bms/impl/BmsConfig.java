@@ -29,9 +29,10 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     long install_deadline_ms() default 120_000;
 
     @AttributeDefinition(description = "How long after a successful install events of its types are still held "
-            + "(the behaviour being registered with the bus); events still held then are not taken by it (its "
-            + "filter) and are discarded (ms)")
-    long handover_grace_ms() default 1_000;
+            + "(ms). 0 for an installer that, as the local one, answers only once the behaviour is registered with "
+            + "the bus; more for one that may answer earlier (a remote installer). Events still held after it are "
+            + "not taken by the behaviour (its filter) and are given up on.")
+    long handover_grace_ms() default 0;
 
     @AttributeDefinition(description = "How often the BMS looks at the bus's held events for deadlines and events "
             + "nothing waits for (ms)")

@@ -10,7 +10,7 @@ record Settings(int maxHeldEvents, long negativeCacheMs, long retryInitialMs, lo
         long installDeadlineMs, long handoverGraceMs, long sweepIntervalMs, List<String> ignoredTypes,
         int historySize) {
 
-    static final Settings DEFAULTS = new Settings(65_536, 60_000, 500, 30_000, 120_000, 1_000, 1_000, List.of(),
+    static final Settings DEFAULTS = new Settings(65_536, 60_000, 500, 30_000, 120_000, 0, 1_000, List.of(),
             256);
 
     Settings {
