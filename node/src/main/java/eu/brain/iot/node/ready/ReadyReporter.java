@@ -43,8 +43,12 @@ import eu.brain.iot.eventing.api.EventBus;
  * otherwise: a check for scripts and CI. It hands the exit code to bnd's launcher as a {@code main.thread}
  * {@link Callable}, which the launcher runs, then stops the framework and exits with its result.
  * <p>
+ * Besides the bus, the ready line waits for the services named by {@value #READY_SERVICES} (the node's bndrun names
+ * the Bundle Installer, registered once its journal is restored, and the BMS's policy).
+ * <p>
  * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
- * {@link #lastLevel} are guarded by {@code this}; the framework calls in from its own threads.
+ * {@link #lastLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
+ * own threads (each service event of a ready service looks again).
  */
 @Component
 public final class ReadyReporter {
