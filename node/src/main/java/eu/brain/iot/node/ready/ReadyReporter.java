@@ -1,5 +1,6 @@
 package eu.brain.iot.node.ready;
 
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.Dictionary;
@@ -15,7 +16,9 @@ import org.osgi.framework.FrameworkListener;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceEvent;
 import org.osgi.framework.ServiceListener;
+import org.osgi.framework.ServiceReference;
 import org.osgi.framework.startlevel.FrameworkStartLevel;
+import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
@@ -44,7 +47,8 @@ import eu.brain.iot.eventing.api.EventBus;
  * {@link Callable}, which the launcher runs, then stops the framework and exits with its result.
  * <p>
  * Besides the bus, the ready line waits for the services named by {@value #READY_SERVICES} (the node's bndrun names
- * the Bundle Installer, registered once its journal is restored, and the BMS's policy).
+ * the Bundle Installer, registered once its journal is restored, and the BMS's policy, both only when the installer
+ * is configured: see {@link ReadyService}).
  * <p>
  * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
  * {@link #lastLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
@@ -79,7 +83,7 @@ public final class ReadyReporter {
     };
     /** Any registration or unregistration of a {@link #READY_SERVICES} service: look again. */
     private final ServiceListener readyServicesListener = event -> reportIfReady();
-    private final List<String> readyServices;
+    private final List<ReadyService> readyServices;
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
@@ -100,10 +104,10 @@ public final class ReadyReporter {
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
         this.context = context;
-        this.readyServices = readyServices(context.getProperty(READY_SERVICES));
+        this.readyServices = ReadyService.parse(context.getProperty(READY_SERVICES));
         if (!readyServices.isEmpty()) {
             StringBuilder filter = new StringBuilder("(|");
-            readyServices.forEach(name -> filter.append("(objectClass=").append(name).append(')'));
+            readyServices.forEach(s -> filter.append("(objectClass=").append(s.name()).append(')'));
             context.addServiceListener(readyServicesListener, filter.append(')').toString());
         }
         context.addFrameworkListener(frameworkListener);
@@ -153,7 +157,7 @@ public final class ReadyReporter {
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
             System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
-                    sinceJvmStart, readyServices.isEmpty() ? "" : " and " + describe(readyServices), bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                    sinceJvmStart, waitedFor(), bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -186,17 +190,11 @@ public final class ReadyReporter {
         }
     }
 
-    static List<String> readyServices(String property) {
-        if (property == null || property.isBlank()) {
-            return List.of();
-        }
-        return Arrays.stream(property.split(",")).map(String::trim).filter(n -> !n.isEmpty()).toList();
-    }
-
+    /** Whether every ready service that is required now (configured, when it names a PID) is registered. */
     private boolean readyServicesUp() {
-        for (String name : readyServices) {
+        for (ReadyService service : readyServices) {
             try {
-                if (context.getServiceReferences(name, null) == null) {
+                if (required(service) && context.getServiceReferences(service.name(), null) == null) {
                     return false;
                 }
             } catch (InvalidSyntaxException | IllegalStateException e) {
@@ -204,6 +202,36 @@ public final class ReadyReporter {
             }
         }
         return true;
+    }
+
+    /** A service that depends on a configuration is waited for only when Config Admin holds it. */
+    private boolean required(ReadyService service) {
+        if (service.pid() == null) {
+            return true;
+        }
+        ServiceReference<ConfigurationAdmin> ref = context.getServiceReference(ConfigurationAdmin.class);
+        ConfigurationAdmin configAdmin = ref == null ? null : context.getService(ref);
+        if (configAdmin == null) {
+            return false;
+        }
+        try {
+            return configAdmin.listConfigurations("(service.pid=" + service.pid() + ")") != null;
+        } catch (IOException | InvalidSyntaxException e) {
+            return false;
+        } finally {
+            context.ungetService(ref);
+        }
+    }
+
+    /** What the ready line says it waited for besides the bus. */
+    private String waitedFor() {
+        List<String> names = new java.util.ArrayList<>();
+        for (ReadyService service : readyServices) {
+            if (required(service)) {
+                names.add(service.name());
+            }
+        }
+        return names.isEmpty() ? "" : " and " + describe(names);
     }
 
     /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
