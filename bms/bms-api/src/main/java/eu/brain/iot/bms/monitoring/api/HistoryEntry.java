@@ -18,7 +18,11 @@ public class HistoryEntry extends DTO {
     public long durationMs;
     /** The attempt, from 1 (0 when no install was tried). */
     public int attempt;
-    /** Events held (handed over, or given up on) at that moment. */
+    /**
+     * Held events given up on at that moment ({@code NOT_FOUND}, {@code GAVE_UP}, {@code REMOVED_BY_OPERATOR},
+     * {@code NOT_TAKEN}), or held at a failed attempt ({@code INSTALL_FAILED}); 0 for {@code INSTALLED}: the bus handed
+     * the held events to the behaviour as it registered it.
+     */
     public int heldEvents;
     /** The reason of a failure, or why events were given up on. */
     public String reason;
