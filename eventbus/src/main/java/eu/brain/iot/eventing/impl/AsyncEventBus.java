@@ -141,6 +141,10 @@ final class AsyncEventBus implements EventBus {
         return matching.toArray(NONE);
     }
 
+    private ConsumerChannel[] targetsIn(RouteTable table, Held held) {
+        return targets(routeOf(table, held.type(), held.counters().eventType), held.snapshot());
+    }
+
     /** Queue an event for its targets, all or none, waiting for room up to the overflow timeout. */
     private void send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot) {
         reserveAll(targets, typeCounters.eventType);
@@ -341,8 +345,7 @@ final class AsyncEventBus implements EventBus {
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);
             RouteTable next = new RouteTable(channels.values());
-            madeReady = hold.size() > 0
-                    && hold.handOver(held -> targets(routeOf(next, held.type(), held.counters().eventType), held.snapshot()));
+            madeReady = hold.size() > 0 && hold.handOver(held -> targetsIn(next, held));
             routes = next;
             if (old != null) {
                 old.close();
@@ -388,7 +391,7 @@ final class AsyncEventBus implements EventBus {
             List<Held> released = hold.removeAll();
             RouteTable table = routes;
             for (Held held : released) {
-                ConsumerChannel[] to = targets(routeOf(table, held.type(), held.counters().eventType), held.snapshot());
+                ConsumerChannel[] to = targetsIn(table, held);
                 if (to.length == 0) {
                     to = table.lastResort;
                 }

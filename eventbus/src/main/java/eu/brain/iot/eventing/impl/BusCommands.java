@@ -17,8 +17,9 @@ import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
         "osgi.command.function=behaviours", "osgi.command.function=publish" })
 public final class BusCommands {
 
-    static final String PUBLISH_USAGE = "usage: bus:publish TYPE key=value ... (values: 42, 1.5, true, \"two words\"; "
-            + "nested: at.x=3), e.g. bus:publish eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation component=Robot1 position=2 detect=0";
+    static final String PUBLISH_USAGE = "usage: bus:publish TYPE key=value ... (values: 42, 1.5, true, "
+            + "\"two words\"; nested: at.x=3), e.g. bus:publish "
+            + "eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation component=Robot1 position=2 detect=0";
 
     private final EventBusStatistics statistics;
     private final EventBus bus;

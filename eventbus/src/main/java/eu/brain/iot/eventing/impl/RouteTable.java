@@ -45,7 +45,8 @@ final class RouteTable {
 
     /** The route of an untyped event: behaviours that consume exactly this type name. */
     Route routeFor(String eventType, Function<String, EventTypeCounters> counters) {
-        return byName.computeIfAbsent(eventType, t -> compute(new LinkedHashSet<>(List.of(t)), counters.apply(t), null));
+        return byName.computeIfAbsent(eventType,
+                t -> compute(new LinkedHashSet<>(List.of(t)), counters.apply(t), null));
     }
 
     private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type) {

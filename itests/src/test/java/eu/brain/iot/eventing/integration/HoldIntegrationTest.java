@@ -138,13 +138,15 @@ class HoldIntegrationTest {
         Map<String, List<Integer>> byPublisher = new HashMap<>();
         for (Map<String, Object> ack : acks.maps) {
             assertThat(ack).containsEntry("ownClass", true);
-            byPublisher.computeIfAbsent((String) ack.get("publisher"), k -> new ArrayList<>()).add((Integer) ack.get("seq"));
+            byPublisher.computeIfAbsent((String) ack.get("publisher"), k -> new ArrayList<>())
+                    .add((Integer) ack.get("seq"));
         }
         for (int p = 0; p < publishers; p++) {
             List<Integer> seqs = byPublisher.get("p" + p);
             assertThat(seqs).as("events of p%d", p).hasSize(perPublisher);
             for (int i = 0; i < perPublisher; i++) {
-                assertThat(seqs.get(i)).as("event %d of p%d (lost, duplicated or overtaken otherwise)", i, p).isEqualTo(i);
+                assertThat(seqs.get(i)).as("event %d of p%d (lost, duplicated or overtaken otherwise)", i, p)
+                        .isEqualTo(i);
             }
         }
         assertThat(byPublisher.get("probe")).as("the probe that was held").contains(0);
