@@ -43,7 +43,8 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * <p>
  * Threads: the installer's thread ({@code brain-iot-bis}) runs installs; {@code brain-iot-bis-repos} reads indexes;
  * {@code brain-iot-bis-callbacks} runs promise callbacks; {@code brain-iot-bis-start} restores the journal and
- * registers the services. {@link #registrations} and {@link #closed} are guarded by {@code this}.
+ * registers the services. {@link #registrations}, {@link #closed} and {@link #starter} are guarded by
+ * {@code this}.
  * <p>
  * A configuration that cannot be used (a trusted key that is no key, a URL that is no URL, a journal line that
  * cannot be read) is logged as one error saying what and where, and the installer does not run: a bad key must never
@@ -60,6 +61,8 @@ public final class BisComponent {
     private final Parts parts;
     private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
     private boolean closed;
+    /** Restores the journal, then registers the services; interrupted when the component goes away first. */
+    private Thread starter;
 
     /** What a running installer consists of. */
     private record Parts(Repositories repositories, Installer installer, ScheduledExecutorService scheduler,
@@ -117,7 +120,12 @@ public final class BisComponent {
         repositories.onChange(installer::retryPending);
         repositories.start();
         long restoreTimeout = Math.max(0, config.restore_timeout_ms());
-        named("brain-iot-bis-start").newThread(() -> restoreThenRegister(context, parts, restoreTimeout)).start();
+        Thread thread = named("brain-iot-bis-start").newThread(() -> restoreThenRegister(context, parts,
+                restoreTimeout));
+        synchronized (this) {
+            starter = thread;
+        }
+        thread.start();
         return parts;
     }
 
@@ -162,6 +170,9 @@ public final class BisComponent {
     void deactivate() {
         synchronized (this) {
             closed = true;
+            if (starter != null) {
+                starter.interrupt();
+            }
             for (ServiceRegistration<?> r : registrations) {
                 try {
                     r.unregister();

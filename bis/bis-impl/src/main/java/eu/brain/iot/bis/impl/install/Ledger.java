@@ -17,8 +17,8 @@ import eu.brain.iot.bis.impl.journal.Journal;
  * which behaviours an operator removed; every change is written to the {@link Journal} at once. Journal entries not
  * (yet) installed again after a start are kept as {@code pending}, so that they stay in the journal.
  * <p>
- * Threads: changed on the installer's thread, read by any (Gogo, {@code installed()}): every method is
- * {@code synchronized}.
+ * Threads: changed mostly on the installer's thread ({@code allow} also on a caller's), read by any (Gogo,
+ * {@code installed()}): every method is {@code synchronized}, journal writes included.
  */
 final class Ledger {
 

@@ -18,7 +18,8 @@ import java.util.Map;
  * The installer's journal, in a directory outside the framework's cache (which a node wipes at each start):
  * {@code journal.tsv} holds what is installed now and which behaviours an operator removed (rewritten atomically
  * after each change); {@code history.log} appends one line per install, uninstall, removal and allowance, for people.
- * Only the installer's thread writes; {@link #load} runs before it starts.
+ * Not thread-safe by itself: its one user, the installer's ledger, calls it under the ledger's lock; {@link #load}
+ * runs before the installer starts.
  */
 public final class Journal {
 
