@@ -36,7 +36,8 @@ public final class InstallBenchmark {
 
     private static final List<String> BUNDLES = List.of("org.osgi.util.function.jar", "org.osgi.util.promise.jar",
             "org.osgi.util.converter.jar", "org.apache.felix.log.jar", "org.osgi.service.component.jar",
-            "org.apache.felix.scr.jar", "org.apache.felix.configadmin.jar", "eventbus.jar", "slf4j-api.jar", "slf4j-simple.jar",
+            "org.apache.felix.scr.jar", "org.apache.felix.configadmin.jar", "eventbus.jar", "slf4j-api.jar",
+            "slf4j-simple.jar",
             "biz.aQute.bnd.util.jar", "biz.aQute.bndlib.jar", "org.osgi.service.repository.jar",
             "org.apache.felix.resolver.jar", "bis-api.jar", "bis-impl.jar", "bms-api.jar", "bms-impl.jar",
             "benchmarks-driver-install.jar");

@@ -245,7 +245,8 @@ class OnDemandInstallIntegrationTest {
         await().atMost(DEADLINE).until(() -> acks.size() == 1);
 
         bundle(ORDERS).stop(); // as a failing behaviour's bundle would be
-        await().atMost(DEADLINE).until(() -> busStatistics.consumers().stream().noneMatch(c -> ORDERS.equals(c.bundle)));
+        await().atMost(DEADLINE)
+                .until(() -> busStatistics.consumers().stream().noneMatch(c -> ORDERS.equals(c.bundle)));
         bus.deliver(order("p", 1));
         await().atMost(DEADLINE).until(() -> acks.size() == 2);
         assertThat(acks.get(1)).containsEntry("seq", 1);

@@ -157,7 +157,8 @@ public final class ReadyReporter {
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
             System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
-                    sinceJvmStart, waitedFor(), bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                    sinceJvmStart, waitedFor(), bundles.length,
+                    howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,

@@ -41,7 +41,8 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  * <p>
  * Ownership: {@link #states} is shared; each entry is replaced as a whole with {@code replace(type, old, new)}
  * (see {@link TypeState}). {@link #jobs} and {@link #loggedNotFound} belong to the BMS's thread. {@link #settings}
- * is volatile, replaced by {@link #reconfigure}. {@link #hierarchies} only grows (one entry per type ever seen).
+ * is volatile, replaced by {@link #reconfigure}. {@link #hierarchies} holds the searched types of each type with a
+ * state (added by publishers, dropped by the sweep with the state).
  */
 final class BehaviourManager {
 
@@ -124,7 +125,8 @@ final class BehaviourManager {
 
     /**
      * Ask the installer for candidates. A resolved answer is used at once (a miss answers LAST_RESORT to this very
-     * event: consumers of last resort, else counted as unhandled); otherwise the events are held until the answer arrives on the BMS's thread. Runs on a publisher's
+     * event: consumers of last resort, else counted as unhandled); otherwise the events are held until the answer
+     * arrives on the BMS's thread. Runs on a publisher's
      * thread or on the BMS's.
      */
     private Disposition search(String eventType, Searching searching) {
@@ -377,9 +379,9 @@ final class BehaviourManager {
                 giveUp(e.getKey(), state, state instanceof Installing i ? i.behaviour() : null, null,
                         "no answer from the installer");
             } else if (state instanceof Installed i && now >= i.graceUntil() && !heldNow.containsKey(e.getKey())) {
-                states.remove(e.getKey(), state); // handed over; a later unhandled event starts afresh anyway
-            } else if (state instanceof Resting r && now >= r.until()) {
-                states.remove(e.getKey(), state);
+                forget(e.getKey(), state); // handed over; a later unhandled event starts afresh anyway
+            } else if (state instanceof Resting r && now >= r.until() && !heldNow.containsKey(e.getKey())) {
+                forget(e.getKey(), state);
             }
         }
     }
@@ -406,6 +408,13 @@ final class BehaviourManager {
     }
 
     // ---------------------------------------------------------------- helpers
+
+    /** Drop a state that no longer matters, and the type's hierarchy with it: the maps stay as small as the work. */
+    private void forget(String eventType, TypeState state) {
+        if (states.remove(eventType, state)) {
+            hierarchies.remove(eventType);
+        }
+    }
 
     private Resting resting(TypeState from, Rest kind, String behaviour, String reason) {
         return new Resting(from.searched(), from.since(), kind, behaviour,

@@ -8,7 +8,10 @@ import org.osgi.dto.DTO;
 public class HistoryEntry extends DTO {
     /** When it ended (milliseconds since the epoch). */
     public long time;
-    /** {@code INSTALLED}, {@code INSTALL_FAILED}, {@code NOT_FOUND}, {@code GAVE_UP}, {@code REMOVED_BY_OPERATOR}, {@code NOT_TAKEN}. */
+    /**
+     * {@code INSTALLED}, {@code INSTALL_FAILED}, {@code NOT_FOUND}, {@code GAVE_UP}, {@code REMOVED_BY_OPERATOR},
+     * {@code NOT_TAKEN}.
+     */
     public String kind;
     /** The event types concerned. */
     public List<String> eventTypes;
