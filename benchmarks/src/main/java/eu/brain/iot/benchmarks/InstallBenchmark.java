@@ -30,7 +30,7 @@ import eu.brain.iot.benchmarks.spi.InstallProbe;
  * that every publisher's events came once and in order.
  * <p>
  * {@code java -jar benchmarks/target/benchmarks.jar}'s sibling: {@code java -cp benchmarks/target/benchmarks.jar
- * eu.brain.iot.benchmarks.InstallBenchmark [--installs 60] [--warmup 5] [--burst 10000]}.
+ * eu.brain.iot.benchmarks.InstallBenchmark [--installs 60] [--warmup 30] [--burst 10000]}.
  */
 public final class InstallBenchmark {
 
@@ -48,7 +48,7 @@ public final class InstallBenchmark {
 
     public static void main(String[] args) throws Exception {
         int installs = intArg(args, "--installs", 60);
-        int warmup = intArg(args, "--warmup", 5);
+        int warmup = intArg(args, "--warmup", 30);
         int burst = intArg(args, "--burst", 10_000);
         Path bundles = Path.of(stringArg(args, "--bundles", "benchmarks/target/bundles"));
         System.out.printf("install benchmark: %d installs (after %d warm-up) per index, burst of %d events; "
