@@ -28,6 +28,10 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 /**
  * The install benchmark's driver inside the framework: configures the real BIS (Config Admin) with the index, publishes
  * the probe's events on the real bus, uninstalls the probe behaviour between installs.
+ * <p>
+ * Threads: the launcher's thread calls {@code configure}, {@code uninstall} and {@code counters}; the launcher's
+ * publisher threads call {@code publish}, which only reads {@code eventBus} (set by {@code configure} before any
+ * publisher starts). The trackers are thread-safe.
  */
 public final class InstallDriverActivator implements BundleActivator {
 
