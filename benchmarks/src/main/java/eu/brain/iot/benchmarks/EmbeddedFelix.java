@@ -40,17 +40,23 @@ final class EmbeddedFelix implements AutoCloseable {
 
     /** Start a framework and install and start the contender's bundles, found in {@code bundleDir}. */
     static EmbeddedFelix start(Contender contender, Path bundleDir) throws IOException, BundleException {
+        return start(contender.key(), contender.bundles(), contender.frameworkProperties(), bundleDir);
+    }
+
+    /** Start a framework and install and start these bundles (file names in {@code bundleDir}). */
+    static EmbeddedFelix start(String key, List<String> bundles, Map<String, String> properties, Path bundleDir)
+            throws IOException, BundleException {
         List<Path> files = new ArrayList<>();
-        for (String name : contender.bundles()) {
+        for (String name : bundles) {
             Path file = bundleDir.resolve(name);
             if (!Files.isRegularFile(file)) {
-                throw new BenchmarkException(contender.key() + ": bundle " + file + " is missing; build first with "
+                throw new BenchmarkException(key + ": bundle " + file + " is missing; build first with "
                         + "`mvn -B -q -pl benchmarks -am package -DskipTests`, or pass --bundles DIR");
             }
             files.add(file);
         }
         Path storage = Files.createTempDirectory("bus-benchmark-felix-");
-        Map<String, String> config = new HashMap<>(contender.frameworkProperties());
+        Map<String, String> config = new HashMap<>(properties);
         config.put(Constants.FRAMEWORK_STORAGE, storage.toString());
         config.put(Constants.FRAMEWORK_STORAGE_CLEAN, Constants.FRAMEWORK_STORAGE_CLEAN_ONFIRSTINIT);
         config.put(Constants.FRAMEWORK_SYSTEMPACKAGES_EXTRA, SPI_EXPORT);
@@ -66,7 +72,7 @@ final class EmbeddedFelix implements AutoCloseable {
             }
             for (Bundle bundle : felix.installed) {
                 if (bundle.getHeaders().get(Constants.FRAGMENT_HOST) == null) {
-                    start(contender, bundle);
+                    start(key, bundle);
                 }
             }
         } catch (BundleException | RuntimeException e) {
@@ -76,11 +82,11 @@ final class EmbeddedFelix implements AutoCloseable {
         return felix;
     }
 
-    private static void start(Contender contender, Bundle bundle) throws BundleException {
+    private static void start(String key, Bundle bundle) throws BundleException {
         try {
             bundle.start();
         } catch (BundleException e) {
-            throw new BundleException(contender.key() + ": bundle " + bundle.getSymbolicName() + " "
+            throw new BundleException(key + ": bundle " + bundle.getSymbolicName() + " "
                     + bundle.getVersion() + " (" + bundle.getLocation() + ") does not start: " + e.getMessage(), e);
         }
     }
@@ -96,6 +102,23 @@ final class EmbeddedFelix implements AutoCloseable {
                     + describeBundles());
         }
         return driver;
+    }
+
+    /** Wait for a service registered inside the framework (whose interface the system bundle exports). */
+    <T> T awaitService(Class<T> type, long timeoutMillis) throws InterruptedException {
+        ServiceTracker<T, T> tracker = new ServiceTracker<>(framework.getBundleContext(), type, null);
+        tracker.open();
+        T service = tracker.waitForService(timeoutMillis);
+        if (service == null) {
+            throw new BenchmarkException("no " + type.getSimpleName() + " service within " + timeoutMillis
+                    + " ms; bundle states: " + describeBundles());
+        }
+        return service;
+    }
+
+    /** The system bundle's context: the launcher registers services the framework's bundles use through it. */
+    org.osgi.framework.BundleContext systemContext() {
+        return framework.getBundleContext();
     }
 
     /** @return symbolic name, version and state of every installed bundle */

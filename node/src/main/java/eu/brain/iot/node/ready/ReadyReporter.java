@@ -1,5 +1,6 @@
 package eu.brain.iot.node.ready;
 
+import java.io.IOException;
 import java.lang.management.ManagementFactory;
 import java.util.Arrays;
 import java.util.Dictionary;
@@ -15,7 +16,9 @@ import org.osgi.framework.FrameworkListener;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceEvent;
 import org.osgi.framework.ServiceListener;
+import org.osgi.framework.ServiceReference;
 import org.osgi.framework.startlevel.FrameworkStartLevel;
+import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
@@ -43,14 +46,26 @@ import eu.brain.iot.eventing.api.EventBus;
  * otherwise: a check for scripts and CI. It hands the exit code to bnd's launcher as a {@code main.thread}
  * {@link Callable}, which the launcher runs, then stops the framework and exits with its result.
  * <p>
+ * Besides the bus, the ready line waits for the services named by {@value #READY_SERVICES} (the node's bndrun names
+ * the Bundle Installer, registered once its journal is restored, and the BMS's policy, both only when the installer
+ * is configured: see {@link ReadyService}).
+ * <p>
  * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
- * {@link #lastLevel} are guarded by {@code this}; the framework calls in from its own threads.
+ * {@link #lastLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
+ * own threads (each service event of a ready service looks again).
  */
 @Component
 public final class ReadyReporter {
 
     /** Framework (or system) property: stop the node and exit once the ready line is printed. */
     public static final String EXIT_WHEN_READY = "fabric.node.exitWhenReady";
+    /**
+     * Framework (or system) property: service interfaces (comma-separated) that must be registered, besides the
+     * bus, before the ready line. The node's bndrun names the Bundle Installer, which registers its service only
+     * once it has put back what its journal lists, and the Behaviour Management Service's policy: so a node that
+     * says it is ready has its behaviours back and installs missing ones on demand.
+     */
+    public static final String READY_SERVICES = "fabric.node.ready.services";
 
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
@@ -66,6 +81,9 @@ public final class ReadyReporter {
             launched();
         }
     };
+    /** Any registration or unregistration of a {@link #READY_SERVICES} service: look again. */
+    private final ServiceListener readyServicesListener = event -> reportIfReady();
+    private final List<ReadyService> readyServices;
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
@@ -86,6 +104,12 @@ public final class ReadyReporter {
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
         this.context = context;
+        this.readyServices = ReadyService.parse(context.getProperty(READY_SERVICES));
+        if (!readyServices.isEmpty()) {
+            StringBuilder filter = new StringBuilder("(|");
+            readyServices.forEach(s -> filter.append("(objectClass=").append(s.name()).append(')'));
+            context.addServiceListener(readyServicesListener, filter.append(')').toString());
+        }
         context.addFrameworkListener(frameworkListener);
         context.addServiceListener(launcherListener, LAUNCHER_READY);
         if (context.getServiceReferences((String) null, LAUNCHER_READY) != null) {
@@ -96,6 +120,7 @@ public final class ReadyReporter {
     @Deactivate
     void deactivate() {
         context.removeServiceListener(launcherListener);
+        context.removeServiceListener(readyServicesListener);
         context.removeFrameworkListener(frameworkListener);
     }
 
@@ -122,7 +147,7 @@ public final class ReadyReporter {
 
     private void reportIfReady() {
         synchronized (this) {
-            if (reported || buses == 0 || !launched) {
+            if (reported || buses == 0 || !launched || !readyServicesUp()) {
                 return;
             }
             reported = true;
@@ -131,8 +156,9 @@ public final class ReadyReporter {
         Bundle[] bundles = context.getBundles();
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus up, %d bundles installed); %s%n",
-                    sinceJvmStart, bundles.length, howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+            System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
+                    sinceJvmStart, waitedFor(), bundles.length,
+                    howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -163,6 +189,50 @@ public final class ReadyReporter {
         } else {
             levelReached();
         }
+    }
+
+    /** Whether every ready service that is required now (configured, when it names a PID) is registered. */
+    private boolean readyServicesUp() {
+        for (ReadyService service : readyServices) {
+            try {
+                if (required(service) && context.getServiceReferences(service.name(), null) == null) {
+                    return false;
+                }
+            } catch (InvalidSyntaxException | IllegalStateException e) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** A service that depends on a configuration is waited for only when Config Admin holds it. */
+    private boolean required(ReadyService service) {
+        if (service.pid() == null) {
+            return true;
+        }
+        ServiceReference<ConfigurationAdmin> ref = context.getServiceReference(ConfigurationAdmin.class);
+        ConfigurationAdmin configAdmin = ref == null ? null : context.getService(ref);
+        if (configAdmin == null) {
+            return false;
+        }
+        try {
+            return configAdmin.listConfigurations("(service.pid=" + service.pid() + ")") != null;
+        } catch (IOException | InvalidSyntaxException e) {
+            return false;
+        } finally {
+            context.ungetService(ref);
+        }
+    }
+
+    /** What the ready line says it waited for besides the bus. */
+    private String waitedFor() {
+        List<String> names = new java.util.ArrayList<>();
+        for (ReadyService service : readyServices) {
+            if (required(service)) {
+                names.add(service.name());
+            }
+        }
+        return names.isEmpty() ? "" : " and " + describe(names);
     }
 
     /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
@@ -203,6 +273,19 @@ public final class ReadyReporter {
         }
     }
 
+    /** How the ready line names what it waited for besides the bus. */
+    static String describe(List<String> services) {
+        List<String> names = new java.util.ArrayList<>();
+        for (String service : services) {
+            names.add(switch (service) {
+            case "eu.brain.iot.bis.api.BundleInstaller" -> "behaviour installer (journal restored)";
+            case "eu.brain.iot.eventing.spi.UnhandledEventPolicy" -> "behaviour management";
+            default -> service.substring(service.lastIndexOf('.') + 1);
+            });
+        }
+        return String.join(" and ", names);
+    }
+
     /**
      * The end of the ready line: what to type, and how to stop the node. Without an interactive shell (the Gogo
      * shell's {@code --nointeractive}, as {@code ./fabric-node --no-shell} sets) there is nothing to type into:
@@ -215,7 +298,7 @@ public final class ReadyReporter {
         if (shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE)) {
             return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
         }
-        return "try bus:behaviours, bus:stats, edge:robots, lb, scr:list; 'stop 0' quits";
+        return "try bus:behaviours, bus:publish, bis:list, bms:pending, edge:robots, lb; 'stop 0' quits";
     }
 
     private void exitWith(int status) {

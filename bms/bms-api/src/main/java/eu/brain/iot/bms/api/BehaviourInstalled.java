@@ -1,0 +1,21 @@
+package eu.brain.iot.bms.api;
+
+import java.util.List;
+
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+
+/** A behaviour that the BMS asked for is installed and registered with the bus; the held events went to it. */
+public class BehaviourInstalled extends BrainIoTEvent {
+    /** The event types that waited for it (usually one). */
+    public List<String> eventTypes;
+    /** The behaviour bundle's symbolic name. */
+    public String behaviour;
+    /** Its version. */
+    public String version;
+    /** The index it came from. */
+    public String repository;
+    /** Milliseconds from the first unhandled event to the installer's answer. */
+    public long durationMs;
+    /** Which attempt succeeded, from 1. */
+    public int attempt;
+}

@@ -1,0 +1,153 @@
+package eu.brain.iot.bms.impl;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutorService;
+import java.util.concurrent.Executors;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Modified;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.metatype.annotations.Designate;
+
+import eu.brain.iot.bis.api.BundleInstaller;
+import eu.brain.iot.bms.impl.TypeState.Installed;
+import eu.brain.iot.bms.impl.TypeState.Installing;
+import eu.brain.iot.bms.impl.TypeState.Resting;
+import eu.brain.iot.bms.impl.TypeState.RetryWait;
+import eu.brain.iot.bms.impl.TypeState.Searching;
+import eu.brain.iot.bms.monitoring.api.BehaviourManagerStatistics;
+import eu.brain.iot.bms.monitoring.api.HistoryEntry;
+import eu.brain.iot.bms.monitoring.api.ManagerCounters;
+import eu.brain.iot.bms.monitoring.api.PendingType;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.spi.HeldEvents;
+import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
+
+/**
+ * The Behaviour Management Service as a Declarative Services component: the bus's {@link UnhandledEventPolicy}
+ * and the BMS's statistics. It needs a {@link BundleInstaller} (local, or one day remote), the bus and the bus's
+ * {@link HeldEvents}. A new configuration applies in place ({@code @Modified}): the types being installed and the
+ * held events are kept. Threads: {@code brain-iot-bms} (the BMS's decisions after an episode's first event) and
+ * {@code brain-iot-bms-alerts} (publishing alerts); see {@link BehaviourManager}.
+ */
+@Component(service = { UnhandledEventPolicy.class, BehaviourManagerStatistics.class },
+        configurationPid = BehaviourManagerComponent.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
+@Designate(ocd = BmsConfig.class)
+public final class BehaviourManagerComponent implements UnhandledEventPolicy, BehaviourManagerStatistics {
+
+    static final String PID = "eu.brain.iot.bms";
+
+    private final BehaviourManager manager;
+    private final ThreadScheduler scheduler;
+    private final ExecutorService alertThread;
+    private final ManagerCountersImpl counters = new ManagerCountersImpl();
+    private final Logger log;
+
+    @Activate
+    public BehaviourManagerComponent(BmsConfig config, @Reference BundleInstaller installer,
+            @Reference EventBus bus, @Reference HeldEvents held,
+            @Reference(service = LoggerFactory.class) Logger log) {
+        this.log = log;
+        Settings settings = Settings.from(config); // a bad value fails activation with the property's name
+        this.scheduler = new ThreadScheduler("brain-iot-bms", log);
+        this.alertThread = Executors.newSingleThreadExecutor(r -> {
+            Thread t = new Thread(r, "brain-iot-bms-alerts");
+            t.setDaemon(true);
+            return t;
+        });
+        this.manager = new BehaviourManager(installer, held, scheduler,
+                new Alerts(bus, alertThread, log, counters.alerts), log, counters, settings);
+        manager.start();
+    }
+
+    @Modified
+    void modified(BmsConfig config) {
+        try {
+            manager.reconfigure(Settings.from(config));
+        } catch (IllegalArgumentException e) {
+            log.error("Behaviour Management Service: configuration refused, the previous one stays: {}",
+                    e.getMessage());
+        }
+    }
+
+    @Deactivate
+    void deactivate() {
+        scheduler.close();
+        alertThread.shutdownNow();
+    }
+
+    @Override
+    public Disposition unhandled(String eventType, List<String> typeHierarchy) {
+        return manager.unhandled(eventType, typeHierarchy);
+    }
+
+    @Override
+    public int maxHeldEvents() {
+        return manager.maxHeldEvents();
+    }
+
+    @Override
+    public List<PendingType> pending() {
+        return pending(manager.states(), manager.heldNow());
+    }
+
+    static List<PendingType> pending(Map<String, TypeState> states, List<HeldType> heldNow) {
+        Map<String, Integer> held = new HashMap<>();
+        heldNow.forEach(h -> held.put(h.eventType, h.count));
+        List<PendingType> list = new ArrayList<>();
+        states.forEach((type, state) -> {
+            PendingType p = new PendingType();
+            p.eventType = type;
+            p.searched = state.searched();
+            p.since = state.since();
+            p.heldEvents = held.getOrDefault(type, 0);
+            if (state instanceof Searching s) {
+                p.state = "SEARCHING";
+                p.attempt = s.attempt() - 1;
+            } else if (state instanceof Installing i) {
+                p.state = "INSTALLING";
+                p.behaviour = i.behaviour();
+                p.attempt = i.attempt();
+            } else if (state instanceof RetryWait w) {
+                p.state = "RETRY_WAIT";
+                p.behaviour = w.behaviour();
+                p.attempt = w.attempt();
+                p.until = w.nextRetry();
+                p.lastReason = w.lastReason();
+            } else if (state instanceof Installed i) {
+                p.state = "INSTALLED";
+                p.behaviour = i.behaviour();
+                p.until = i.graceUntil();
+            } else if (state instanceof Resting r) {
+                p.state = r.kind().name();
+                p.behaviour = r.behaviour();
+                p.until = r.until();
+                p.unhandledEvents = r.unhandled().sum();
+                p.lastReason = r.reason();
+            }
+            list.add(p);
+        });
+        list.sort(Comparator.comparingLong((PendingType p) -> p.since).thenComparing(p -> p.eventType));
+        return list;
+    }
+
+    @Override
+    public List<HistoryEntry> history() {
+        return manager.history();
+    }
+
+    @Override
+    public ManagerCounters counters() {
+        return counters.snapshot();
+    }
+}

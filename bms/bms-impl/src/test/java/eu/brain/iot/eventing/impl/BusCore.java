@@ -1,0 +1,77 @@
+package eu.brain.iot.eventing.impl;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.osgi.service.log.Logger;
+
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+import eu.brain.iot.eventing.spi.HeldEvents;
+import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
+
+/**
+ * The real bus core (package-private in the bus bundle) for the BMS's unit tests: the same class, on the test's
+ * class path, without OSGi. It lives in the bus's package in this module's test tree only; nothing ships it.
+ */
+public final class BusCore implements EventBus, HeldEvents {
+
+    private final AsyncEventBus bus;
+    private final AtomicLong ids = new AtomicLong();
+
+    public BusCore(int queueCapacity, long overflowTimeoutMillis, Logger log) {
+        bus = new AsyncEventBus("test-node", queueCapacity, overflowTimeoutMillis, new DeliveryPool.Settings(2,
+                TimeUnit.MICROSECONDS.toNanos(50), TimeUnit.MILLISECONDS.toNanos(5), TimeUnit.SECONDS.toNanos(1)),
+                log);
+    }
+
+    /** Register a typed behaviour, as the bus's component does when its service appears. */
+    public long addBehaviour(Object behaviour, String... consumed) {
+        long id = ids.incrementAndGet();
+        bus.addConsumer(new ConsumerSpec(id, "behaviour#" + id, "test.bundle", Set.of(consumed), null, false, false,
+                BehaviourHandle.of(behaviour), className -> null));
+        return id;
+    }
+
+    public void removeBehaviour(long id) {
+        bus.removeConsumer(id);
+    }
+
+    public void policy(UnhandledEventPolicy policy) {
+        bus.policy(policy);
+    }
+
+    @Override
+    public void deliver(BrainIoTEvent event) {
+        bus.deliver(event);
+    }
+
+    @Override
+    public void deliver(String eventType, Map<String, Object> eventData) {
+        bus.deliver(eventType, eventData);
+    }
+
+    @Override
+    public List<HeldType> held() {
+        return bus.held();
+    }
+
+    @Override
+    public int discard(String eventType, String reason) {
+        return bus.discard(eventType, reason);
+    }
+
+    public EventTypeStatistics statistics(String eventType) {
+        return bus.eventTypes().stream().filter(s -> s.eventType.equals(eventType)).findFirst()
+                .orElseGet(EventTypeStatistics::new);
+    }
+
+    public void close() {
+        bus.close();
+    }
+}

@@ -1,0 +1,329 @@
+package eu.brain.iot.bms.integration;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Comparator;
+import java.util.Dictionary;
+import java.util.HashMap;
+import java.util.Hashtable;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.atomic.AtomicReference;
+import java.util.stream.Collectors;
+import java.util.stream.Stream;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.BeforeEach;
+import org.junit.jupiter.api.Test;
+import org.osgi.framework.Bundle;
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceReference;
+import org.osgi.framework.ServiceRegistration;
+import org.osgi.service.cm.Configuration;
+import org.osgi.service.cm.ConfigurationAdmin;
+import org.osgi.test.common.annotation.InjectBundleContext;
+import org.osgi.test.common.annotation.InjectService;
+
+import eu.brain.iot.bis.api.BundleInstaller;
+import eu.brain.iot.bis.api.InstalledBehaviour;
+import eu.brain.iot.bms.api.BehaviourInstallFailed;
+import eu.brain.iot.bms.api.BehaviourInstalled;
+import eu.brain.iot.bms.api.BehaviourNotFound;
+import eu.brain.iot.bms.integration.tb.Order;
+import eu.brain.iot.bms.integration.tb.OrderBehaviourActivator;
+import eu.brain.iot.bms.integration.tb.Refill;
+import eu.brain.iot.bms.monitoring.api.BehaviourManagerStatistics;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+
+/**
+ * Behaviours installed on demand, in Felix, with the real bus, Behaviour Management Service and Bundle Installer
+ * (the Felix resolver), from a real index of a real behaviour bundle: what reaches the behaviour's {@code notify()}
+ * (it answers each event with an acknowledgement), what the framework holds, and the BMS's alerts.
+ */
+class OnDemandInstallIntegrationTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String ORDERS = "tb.bms.orders";
+
+    @InjectBundleContext
+    BundleContext context;
+    @InjectService(timeout = 5000)
+    ConfigurationAdmin configAdmin;
+    @InjectService(timeout = 5000)
+    EventBus bus;
+    @InjectService(timeout = 5000)
+    EventBusStatistics busStatistics;
+
+    private Path temp;
+    private TestRepository repository;
+    private Configuration bis;
+    private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
+    private final List<Map<String, Object>> acks = new CopyOnWriteArrayList<>();
+    private final List<BrainIoTEvent> alerts = new CopyOnWriteArrayList<>();
+
+    @BeforeEach
+    void start() throws Exception {
+        temp = Files.createTempDirectory("bms-itest");
+        repository = TestRepository.create(temp.resolve("repo"), ORDERS, OrderBehaviourActivator.class,
+                new String[] { Order.class.getName(), Refill.class.getName() }, Order.class, Refill.class);
+        Hashtable<String, Object> ackProps = new Hashtable<>();
+        ackProps.put("eu.brain.iot.behaviour.consumed", OrderBehaviourActivator.ACK);
+        registrations.add(context.registerService(UntypedSmartBehaviour.class,
+                (UntypedSmartBehaviour) (type, data) -> acks.add(new HashMap<>(data)), ackProps));
+        Hashtable<String, Object> alertProps = new Hashtable<>();
+        alertProps.put("eu.brain.iot.behaviour.consumed", new String[] { BehaviourNotFound.class.getName(),
+                BehaviourInstallFailed.class.getName(), BehaviourInstalled.class.getName() });
+        registrations.add(context.registerService(SmartBehaviour.class,
+                (SmartBehaviour<BrainIoTEvent>) alerts::add, alertProps));
+    }
+
+    /** Configure the BIS with the test's index (signatures not checked: the BIS's own tests cover trust). */
+    private BundleInstaller configure() throws Exception {
+        bis = configAdmin.getConfiguration("eu.brain.iot.bis", "?");
+        Dictionary<String, Object> props = new Hashtable<>();
+        props.put("repositories", new String[] { repository.index.toUri().toString() });
+        props.put("journal.dir", temp.resolve("journal").toString());
+        props.put("refresh.ms", 100L);
+        bis.update(props);
+        await().atMost(DEADLINE).until(() -> context.getServiceReference(BehaviourManagerStatistics.class) != null);
+        BundleInstaller installer = service(BundleInstaller.class);
+        await().atMost(DEADLINE).until(() -> !installer.find(List.of(Order.class.getName())).getValue().isEmpty());
+        return installer;
+    }
+
+    @AfterEach
+    void stop() throws Exception {
+        BundleInstaller installer = context.getServiceReference(BundleInstaller.class) == null ? null
+                : service(BundleInstaller.class);
+        if (installer != null) {
+            for (InstalledBehaviour b : installer.installed()) {
+                installer.uninstall(b.symbolicName, "test clean-up", false).getValue();
+            }
+        }
+        registrations.forEach(ServiceRegistration::unregister);
+        if (bis != null) {
+            bis.delete();
+            await().atMost(DEADLINE).until(() -> context.getServiceReference(BundleInstaller.class) == null);
+        }
+        try (Stream<Path> files = Files.walk(temp)) {
+            files.sorted(Comparator.reverseOrder()).forEach(p -> p.toFile().delete());
+        }
+    }
+
+    @Test
+    void anUnhandledEventInstallsTheBehaviourThatConsumesItFromTheIndexAndReachesIt() throws Exception {
+        BundleInstaller installer = configure();
+        assertThat(bundle(ORDERS)).isNull();
+
+        bus.deliver(order("p", 0));
+
+        await().atMost(DEADLINE).until(() -> acks.size() == 1);
+        assertThat(acks.get(0)).containsEntry("type", Order.class.getName()).containsEntry("seq", 0)
+                .containsEntry("ownClass", true);
+        assertThat(installer.installed()).singleElement().satisfies(b -> {
+            assertThat(b.symbolicName).isEqualTo(ORDERS);
+            assertThat(b.reason).contains(Order.class.getName());
+        });
+        await().atMost(DEADLINE).until(() -> !alertsOf(BehaviourInstalled.class).isEmpty());
+        assertThat(alertsOf(BehaviourInstalled.class).get(0).behaviour).isEqualTo(ORDERS);
+        assertThat(service(BehaviourManagerStatistics.class).history()).extracting(e -> e.kind)
+                .containsExactly("INSTALLED");
+    }
+
+    @Test
+    void aBurstFromFourPublishersWhileTheInstallRunsReachesTheBehaviourOnceEachInPublishOrder() throws Exception {
+        configure();
+        int publishers = 4;
+        int perPublisher = 2_500;
+        CountDownLatch go = new CountDownLatch(1);
+        AtomicReference<Throwable> failure = new AtomicReference<>();
+        List<Thread> threads = new ArrayList<>();
+        for (int p = 0; p < publishers; p++) {
+            String name = "publisher-" + p;
+            Thread t = new Thread(() -> {
+                try {
+                    go.await();
+                    for (int i = 0; i < perPublisher; i++) {
+                        bus.deliver(order(name, i));
+                    }
+                } catch (Throwable e) {
+                    failure.set(e);
+                }
+            }, name);
+            t.start();
+            threads.add(t);
+        }
+        go.countDown();
+        for (Thread t : threads) {
+            t.join();
+        }
+        assertThat(failure.get()).isNull();
+
+        await().atMost(DEADLINE).until(() -> acks.size() >= publishers * perPublisher);
+        Map<Object, List<Integer>> byPublisher = new HashMap<>();
+        for (Map<String, Object> ack : acks) {
+            byPublisher.computeIfAbsent(ack.get("publisher"), k -> new ArrayList<>()).add((Integer) ack.get("seq"));
+        }
+        assertThat(byPublisher).hasSize(publishers);
+        byPublisher.forEach((publisher, seqs) -> {
+            assertThat(seqs).as("%s: every event once", publisher).hasSize(perPublisher);
+            for (int i = 0; i < perPublisher; i++) {
+                assertThat(seqs.get(i)).as("%s's event %d in order", publisher, i).isEqualTo(i);
+            }
+        });
+        EventTypeStatistics orders = typeStatistics(Order.class.getName());
+        assertThat(orders.unhandled).isZero();
+        assertThat(orders.held).isZero();
+        assertThat(service(BehaviourManagerStatistics.class).counters().heldEvents)
+                .as("events held during the install").isPositive();
+        assertThat(bundles(ORDERS)).hasSize(1);
+    }
+
+    @Test
+    void aBundleWhoseBytesDoNotMatchItsIndexIsNeverInstalledAndAnAlertSaysWhy() throws Exception {
+        repository.tamper();
+        configure();
+        Set<Long> before = bundleIds();
+
+        bus.deliver(order("p", 0));
+
+        await().atMost(DEADLINE).until(() -> !alertsOf(BehaviourInstallFailed.class).isEmpty());
+        BehaviourInstallFailed alert = alertsOf(BehaviourInstallFailed.class).get(0);
+        assertThat(alert.problem).isEqualTo("HASH_MISMATCH");
+        assertThat(alert.eventType).isEqualTo(Order.class.getName());
+        assertThat(alert.reason).isNotBlank();
+        assertThat(alert.nextRetry).as("retried with backoff").isPositive();
+        assertThat(bundleIds()).isEqualTo(before);
+        assertThat(bundle(ORDERS)).isNull();
+        assertThat(acks).isEmpty();
+        assertThat(service(BehaviourManagerStatistics.class).pending()).singleElement()
+                .satisfies(p -> assertThat(p.heldEvents).isEqualTo(1));
+    }
+
+    @Test
+    void twoEventTypesThatNeedTheSameBundleAtOnceCauseOneInstall() throws Exception {
+        configure();
+        CountDownLatch go = new CountDownLatch(1);
+        Thread refills = new Thread(() -> {
+            try {
+                go.await();
+                bus.deliver(refill("r", 0));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        });
+        refills.start();
+        go.countDown();
+        bus.deliver(order("o", 0));
+        refills.join();
+
+        await().atMost(DEADLINE).until(() -> acks.size() == 2);
+        assertThat(acks).extracting(a -> a.get("type")).containsExactlyInAnyOrder(Order.class.getName(),
+                Refill.class.getName());
+        assertThat(bundles(ORDERS)).hasSize(1);
+        assertThat(alertsOf(BehaviourInstalled.class)).hasSize(1);
+    }
+
+    @Test
+    void aBehaviourStoppedByAFailureComesBackWithTheNextEventButNotOneAnOperatorRemoved() throws Exception {
+        BundleInstaller installer = configure();
+        bus.deliver(order("p", 0));
+        await().atMost(DEADLINE).until(() -> acks.size() == 1);
+
+        bundle(ORDERS).stop(); // as a failing behaviour's bundle would be
+        await().atMost(DEADLINE)
+                .until(() -> busStatistics.consumers().stream().noneMatch(c -> ORDERS.equals(c.bundle)));
+        bus.deliver(order("p", 1));
+        await().atMost(DEADLINE).until(() -> acks.size() == 2);
+        assertThat(acks.get(1)).containsEntry("seq", 1);
+        assertThat(bundle(ORDERS).getState()).isEqualTo(Bundle.ACTIVE);
+
+        installer.uninstall(ORDERS, "bis:uninstall by an operator", true).getValue();
+        assertThat(bundle(ORDERS)).isNull();
+        int alertsBefore = alerts.size();
+        bus.deliver(order("p", 2));
+        await().atMost(DEADLINE).until(() -> alerts.size() > alertsBefore);
+        assertThat(alerts.subList(alertsBefore, alerts.size())).allSatisfy(a -> assertThat(a)
+                .isInstanceOfAny(BehaviourInstallFailed.class, BehaviourNotFound.class));
+        bus.deliver(order("p", 3));
+        await().atMost(DEADLINE).until(() -> typeStatistics(Order.class.getName()).unhandled >= 2);
+        assertThat(bundle(ORDERS)).isNull();
+        assertThat(acks).hasSize(2);
+    }
+
+    @Test
+    void anEventTypeNoRepositoryHasGivesOneAlertAndItsPublisherNeverWaits() throws Exception {
+        configure();
+        String nobody = "eu.brain.iot.bms.integration.NoOneConsumesThis";
+        for (int i = 0; i < 100_000; i++) {
+            bus.deliver(nobody, Map.of("seq", i));
+        }
+        await().atMost(DEADLINE).until(() -> !alertsOf(BehaviourNotFound.class).isEmpty());
+        assertThat(alertsOf(BehaviourNotFound.class)).singleElement().satisfies(a -> {
+            assertThat(a.eventType).isEqualTo(nobody);
+            assertThat(a.heldEvents).isZero();
+        });
+        EventTypeStatistics stats = typeStatistics(nobody);
+        assertThat(stats.unhandled).isEqualTo(100_000);
+        assertThat(stats.held).isZero();
+        assertThat(service(BehaviourManagerStatistics.class).counters().heldEvents)
+                .as("not one of them was held: the publisher never waited for an install").isZero();
+        assertThat(service(BehaviourManagerStatistics.class).counters().searches).isEqualTo(1);
+    }
+
+    private static Order order(String publisher, int seq) {
+        Order o = new Order();
+        o.publisher = publisher;
+        o.seq = seq;
+        return o;
+    }
+
+    private static Refill refill(String publisher, int seq) {
+        Refill r = new Refill();
+        r.publisher = publisher;
+        r.seq = seq;
+        return r;
+    }
+
+    private <T> T service(Class<T> type) {
+        ServiceReference<T> ref = context.getServiceReference(type);
+        assertThat(ref).as("a %s service", type.getSimpleName()).isNotNull();
+        return context.getService(ref);
+    }
+
+    private <T> List<T> alertsOf(Class<T> type) {
+        return alerts.stream().filter(type::isInstance).map(type::cast).toList();
+    }
+
+    private EventTypeStatistics typeStatistics(String type) {
+        return busStatistics.eventTypes().stream().filter(s -> s.eventType.equals(type)).findFirst()
+                .orElseGet(EventTypeStatistics::new);
+    }
+
+    private Bundle bundle(String symbolicName) {
+        List<Bundle> found = bundles(symbolicName);
+        return found.isEmpty() ? null : found.get(0);
+    }
+
+    private List<Bundle> bundles(String symbolicName) {
+        return Arrays.stream(context.getBundles()).filter(b -> symbolicName.equals(b.getSymbolicName())).toList();
+    }
+
+    private Set<Long> bundleIds() {
+        return Arrays.stream(context.getBundles()).map(Bundle::getBundleId).collect(Collectors.toSet());
+    }
+}
