@@ -13,6 +13,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ThreadFactory;
 
+import org.osgi.annotation.bundle.Capability;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.component.annotations.Activate;
@@ -50,6 +51,10 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * cannot be read) is logged as one error saying what and where, and the installer does not run: a bad key must never
  * silently turn signature checks off.
  */
+// The service is registered from code once the journal is restored, so DS cannot declare it: declare it here, so that
+// a resolver (a node's bndrun, a test's) sees that this bundle provides what the BMS requires.
+@Capability(namespace = "osgi.service", attribute = "objectClass:List<String>=\"eu.brain.iot.bis.api.BundleInstaller\"",
+        uses = BundleInstaller.class)
 @Component(configurationPid = BisComponent.PID, configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)
 @Designate(ocd = BisConfig.class)
 public final class BisComponent {

@@ -21,6 +21,7 @@ import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.BundleException;
 import org.osgi.framework.FrameworkListener;
+import org.osgi.framework.startlevel.BundleStartLevel;
 import org.osgi.framework.wiring.BundleRevision;
 import org.osgi.framework.wiring.BundleWire;
 import org.osgi.framework.wiring.BundleWiring;
@@ -231,7 +232,13 @@ final class Transaction {
                     + " it first");
         }
         try {
-            return context.installBundle(location, new ByteArrayInputStream(bytes));
+            Bundle installed = context.installBundle(location, new ByteArrayInputStream(bytes));
+            // A launcher may give bundles installed at run time a start level above the one the framework is at
+            // (bnd's launcher: above every run bundle), and start() would then only mark them for later: a
+            // behaviour would not run until the framework climbed there. The installer's own level is reached.
+            installed.adapt(BundleStartLevel.class)
+                    .setStartLevel(context.getBundle().adapt(BundleStartLevel.class).getStartLevel());
+            return installed;
         } catch (BundleException e) {
             throw new InstallException(Problem.START_FAILED, r + " from " + r.url() + " could not be installed: "
                     + e.getMessage(), e);
