@@ -12,7 +12,7 @@ import eu.brain.iot.bip.print.Printer;
 
 /**
  * The command-line tool: {@code java -jar bip-core.jar check FILE...}, {@code generate FILE... -o DIR} and
- * {@code print FILE}. Exit code 0 when there is no error, 1 when the models have errors, 2 for a bad command line.
+ * {@code print FILE}, {@code smc FILE... --property QUERY}. Exit code 0 when there is no error, 1 when the models have errors, 2 for a bad command line.
  * Problems are printed as {@code file:line:col: error: message}; an internal failure is reported in one line,
  * never as a stack trace.
  */
@@ -22,10 +22,12 @@ public final class Main {
             usage: bip check FILE... [-I DIR]...
                    bip generate FILE... -o DIR [-I DIR]... [--root COMPOUND] [--strict]
                    bip print FILE [-I DIR]...
+                   bip smc FILE... --property QUERY ... (bip smc --help for its options)
               check     parse and check the models; print every problem as file:line:col: severity: message
               generate  check, then write Java: one class per atom type, an extern interface per atom type, and,
                         for the root compound, event types and one OSGi smart behaviour per atom type
               print     print the model as canonical BIP
+              smc       statistical model checking of PBLTL queries on the root compound
               -I DIR    where 'use'd packages are found (as <Package>.bip)
               --root    the compound type that is the system (default: the last compound type of the files)
               --strict  a system that cannot run on the event bus (e.g. hierarchical connectors) is an error;
@@ -55,6 +57,15 @@ public final class Main {
             return args.length == 0 ? 2 : 0;
         }
         String command = args[0];
+        if (command.equals("smc")) {
+            try {
+                return SmcCommand.run(args, out, err);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                err.println("bip: interrupted");
+                return 3;
+            }
+        }
         List<Path> files = new ArrayList<>();
         List<Path> includes = new ArrayList<>();
         Path output = null;

@@ -299,6 +299,12 @@ final class AtomWriter {
         c.line("/** Fires the first enabled internal transition; @return whether one fired */");
         c.open("public boolean internalStep()");
         fireFirst(c, atom.transitions().stream().filter(Transition::internal).toList());
+        c.close().blank();
+        c.line("/** @return whether an internal transition is enabled (the statistical model checker offers it as a step) */");
+        c.open("public boolean isInternalEnabled()");
+        List<Transition> internal = atom.transitions().stream().filter(Transition::internal).toList();
+        c.line("return " + (internal.isEmpty() ? "false"
+                : internal.stream().map(t -> "(" + condition(t) + ")").collect(Collectors.joining(" || "))) + ";");
         c.close();
     }
 

@@ -38,6 +38,12 @@ final class Code {
         return this;
     }
 
+    /** Appends text (already indented lines) as it is. */
+    Code raw(String text) {
+        out.append(text);
+        return this;
+    }
+
     Code blank() {
         return line("");
     }

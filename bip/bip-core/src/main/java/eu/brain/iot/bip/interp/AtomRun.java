@@ -182,6 +182,11 @@ public final class AtomRun {
         return false;
     }
 
+    /** @return whether an internal transition is enabled (the statistical model checker offers it as a step) */
+    public boolean internalEnabled() {
+        return type.transitions().stream().anyMatch(t -> t.internal() && enabled(t));
+    }
+
     private void execute(Transition t) {
         t.from().stream().filter(p -> !t.to().contains(p)).forEach(marking::remove);
         marking.addAll(t.to());

@@ -1,0 +1,122 @@
+package eu.brain.iot.bip.smc.sim;
+
+import java.io.ByteArrayOutputStream;
+import java.io.File;
+import java.io.IOException;
+import java.io.OutputStream;
+import java.io.UncheckedIOException;
+import java.net.URI;
+import java.net.URISyntaxException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+
+import javax.tools.Diagnostic;
+import javax.tools.DiagnosticCollector;
+import javax.tools.FileObject;
+import javax.tools.ForwardingJavaFileManager;
+import javax.tools.JavaCompiler;
+import javax.tools.JavaFileManager;
+import javax.tools.JavaFileObject;
+import javax.tools.SimpleJavaFileObject;
+import javax.tools.StandardJavaFileManager;
+import javax.tools.ToolProvider;
+
+import eu.brain.iot.bip.generate.JavaFile;
+import eu.brain.iot.bip.smc.runtime.SimulatedSystem;
+
+/**
+ * Compiles generated sources in memory with the JDK's compiler (javax.tools) and loads them in a fresh class loader
+ * whose parent is bip-core's, so the classes of one model never meet another's.
+ */
+final class RuntimeCompiler {
+
+    /** The compiler is missing (a JRE without jdk.compiler) or the generated code does not compile. */
+    static final class CompileException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        CompileException(String message) {
+            super(message);
+        }
+    }
+
+    private RuntimeCompiler() {
+    }
+
+    static ClassLoader compile(List<JavaFile> files, List<Path> classpath) throws CompileException {
+        JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
+        if (javac == null) {
+            throw new CompileException("no Java compiler in this runtime (run on a JDK, not a JRE)");
+        }
+        List<JavaFileObject> sources = new ArrayList<>();
+        for (JavaFile f : files) {
+            sources.add(new SimpleJavaFileObject(URI.create("string:///" + f.relativePath().toString()
+                    .replace(File.separatorChar, '/')), JavaFileObject.Kind.SOURCE) {
+                @Override
+                public CharSequence getCharContent(boolean ignoreEncodingErrors) {
+                    return f.source();
+                }
+            });
+        }
+        List<String> cp = new ArrayList<>();
+        cp.add(location(SimulatedSystem.class));
+        classpath.forEach(p -> cp.add(p.toString()));
+        Map<String, byte[]> classes = new HashMap<>();
+        DiagnosticCollector<JavaFileObject> diagnostics = new DiagnosticCollector<>();
+        try (StandardJavaFileManager standard = javac.getStandardFileManager(diagnostics, Locale.ROOT, null);
+                JavaFileManager fm = new ForwardingJavaFileManager<>(standard) {
+                    @Override
+                    public JavaFileObject getJavaFileForOutput(Location location, String className,
+                            JavaFileObject.Kind kind, FileObject sibling) {
+                        return new SimpleJavaFileObject(URI.create("mem:///" + className.replace('.', '/') + ".class"),
+                                kind) {
+                            @Override
+                            public OutputStream openOutputStream() {
+                                return new ByteArrayOutputStream() {
+                                    @Override
+                                    public void close() {
+                                        classes.put(className, toByteArray());
+                                    }
+                                };
+                            }
+                        };
+                    }
+                }) {
+            boolean ok = javac.getTask(null, fm, diagnostics, List.of("-classpath", String.join(File.pathSeparator, cp),
+                    "-proc:none", "-nowarn", "-g:none", "--release", "17"), null, sources).call();
+            if (!ok) {
+                StringBuilder message = new StringBuilder("the Java generated for simulation does not compile "
+                        + "(please report it with the model):");
+                for (Diagnostic<? extends JavaFileObject> d : diagnostics.getDiagnostics()) {
+                    if (d.getKind() == Diagnostic.Kind.ERROR) {
+                        message.append('\n').append(d);
+                    }
+                }
+                throw new CompileException(message.toString());
+            }
+        } catch (IOException e) {
+            throw new UncheckedIOException(e);
+        }
+        return new ClassLoader(RuntimeCompiler.class.getClassLoader()) {
+            @Override
+            protected Class<?> findClass(String name) throws ClassNotFoundException {
+                byte[] bytes = classes.get(name);
+                if (bytes == null) {
+                    throw new ClassNotFoundException(name);
+                }
+                return defineClass(name, bytes, 0, bytes.length);
+            }
+        };
+    }
+
+    private static String location(Class<?> type) {
+        try {
+            return Path.of(type.getProtectionDomain().getCodeSource().getLocation().toURI()).toString();
+        } catch (URISyntaxException | NullPointerException e) {
+            return System.getProperty("java.class.path");
+        }
+    }
+}
