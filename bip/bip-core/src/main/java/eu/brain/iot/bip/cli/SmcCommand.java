@@ -37,9 +37,11 @@ final class SmcCommand {
             usage: bip smc FILE... [-I DIR]... [--root COMPOUND] (--property QUERY | --properties FILE)...
                        [--epsilon E] [--delta D] [--alpha A] [--beta B] [--indifference I] [--test sprt|fixed]
                        [--seed S] [--threads N] [--max-steps N] [--engine compiled|interpreted]
-                       [--csv FILE] [--svg FILE] [--report DIR] [--quiet]
+                       [--externs CLASS [--cp PATH]] [--csv FILE] [--svg FILE] [--report DIR] [--quiet]
               QUERY       P=? [ φ ], P>=θ [ φ ] or P<=θ [ φ ], optionally 'for x = from:to:step, ...'
               --properties a requirements file (see bip/README): 'set' lines and 'NAME: QUERY' lines
+              --externs   the simulation of the model's extern functions (implements
+                          eu.brain.iot.bip.smc.runtime.SimulationExterns), found on --cp
               defaults: epsilon = delta = alpha = beta = indifference = 0.01, sprt, seed 1, every core,
                         traces as long as each formula's horizon, the compiled engine
             """;
@@ -65,11 +67,13 @@ final class SmcCommand {
         Path svg = null;
         Path report = null;
         boolean quiet = false;
+        String externs = null;
+        List<Path> classpath = new ArrayList<>();
         for (int i = 1; i < args.length; i++) {
             String a = args[i];
             String key = a.startsWith("--") ? a.substring(2) : a;
             boolean valued = a.equals("-I") || OPTIONS.contains(key) || List.of("root", "property", "properties", "csv",
-                    "svg", "report").contains(key) && a.startsWith("--");
+                    "svg", "report", "externs", "cp").contains(key) && a.startsWith("--");
             if (valued && i + 1 >= args.length) {
                 err.println("bip: " + a + " needs a value\n" + USAGE);
                 return 2;
@@ -86,6 +90,12 @@ final class SmcCommand {
                 properties.add(args[++i]);
             } else if (a.equals("--properties")) {
                 propertyFiles.add(Path.of(args[++i]));
+            } else if (a.equals("--externs")) {
+                externs = args[++i];
+            } else if (a.equals("--cp")) {
+                for (String p : args[++i].split(java.io.File.pathSeparator)) {
+                    classpath.add(Path.of(p));
+                }
             } else if (a.equals("--csv")) {
                 csv = Path.of(args[++i]);
             } else if (a.equals("--svg")) {
@@ -109,11 +119,17 @@ final class SmcCommand {
             }
         }
         Diagnostics diagnostics = new Diagnostics();
+        Pos externsPos = new Pos("--externs", 1, 1);
         List<RequirementsFile> requirementFiles = new ArrayList<>();
         for (Path p : propertyFiles) {
             requirementFiles.add(RequirementsFile.read(p, diagnostics));
-            if (root == null && requirementFiles.get(requirementFiles.size() - 1).settings().containsKey("root")) {
-                root = requirementFiles.get(requirementFiles.size() - 1).settings().get("root").value();
+            RequirementsFile last = requirementFiles.get(requirementFiles.size() - 1);
+            if (root == null && last.settings().containsKey("root")) {
+                root = last.settings().get("root").value();
+            }
+            if (externs == null && last.settings().containsKey("externs")) {
+                externs = last.settings().get("externs").value();
+                externsPos = last.settings().get("externs").pos();
             }
         }
         SmcOptions smc = SmcOptions.defaults();
@@ -164,10 +180,16 @@ final class SmcCommand {
             return 1;
         }
         diagnostics.sorted().forEach(err::println);
+        java.util.function.Supplier<SimulationExterns> simulation = externs == null ? () -> SimulationExterns.NONE
+                : RequirementsCheck.simulationExterns(externs, externsPos, classpath, diagnostics);
+        if (diagnostics.hasErrors()) {
+            diagnostics.sorted().forEach(err::println);
+            return 1;
+        }
         SmcRunner.Listener listener = quiet || System.console() == null ? null : new TerminalProgress(err);
         RequirementsCheck.Outcome outcome;
         try {
-            outcome = RequirementsCheck.check(session.get(), queries, smc, () -> SimulationExterns.NONE, List.of(),
+            outcome = RequirementsCheck.check(session.get(), queries, smc, simulation, classpath,
                     report, listener);
         } catch (RequirementsCheck.Failure e) {
             err.println("bip: " + e.getMessage());

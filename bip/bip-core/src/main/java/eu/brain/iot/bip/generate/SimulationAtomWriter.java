@@ -143,7 +143,7 @@ final class SimulationAtomWriter {
             String result = JavaNames.javaType(call.result(), scope);
             c.line("@Override");
             c.open("public " + result + " " + JavaNames.id(call.name()) + "(" + String.join(", ", params) + ")");
-            c.line(SimulationWriter.callBody(call, args, scope, "random", "simulation", true));
+            c.line(SimulationCode.callBody(call, args, scope, "random", "simulation", true));
             c.close();
         }
         c.close();

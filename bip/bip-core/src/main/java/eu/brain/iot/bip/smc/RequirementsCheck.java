@@ -94,7 +94,7 @@ public final class RequirementsCheck {
         }
         RequirementsFile.Setting externs = file.settings().get("externs");
         Supplier<SimulationExterns> simulation = externs == null ? () -> SimulationExterns.NONE
-                : externs(externs, request.classpath(), diagnostics);
+                : simulationExterns(externs.value(), externs.pos(), request.classpath(), diagnostics);
         Optional<SmcSession> session = SmcSession.load(request.modelFiles(), request.modelPath(), root, diagnostics);
         if (session.isEmpty() || diagnostics.hasErrors()) {
             return Optional.empty();
@@ -186,8 +186,15 @@ public final class RequirementsCheck {
         }
     }
 
-    private static Supplier<SimulationExterns> externs(RequirementsFile.Setting setting, List<Path> classpath,
+    /**
+     * Loads the simulation of a model's extern functions: a class implementing {@link SimulationExterns} with a
+     * public no-argument constructor, found on {@code classpath} or bip-core's own class path.
+     *
+     * @return a supplier of one instance per sampling thread (NONE after an error, reported at {@code pos})
+     */
+    public static Supplier<SimulationExterns> simulationExterns(String className, Pos pos, List<Path> classpath,
             Diagnostics diagnostics) {
+        RequirementsFile.Setting setting = new RequirementsFile.Setting(className, pos);
         try {
             List<URL> urls = new ArrayList<>();
             for (Path p : classpath) {
