@@ -59,6 +59,6 @@ class EnginesAgreeTest {
                 }
             }
         }
-        assertThat(steps).as("the traces are not trivial").isGreaterThan(200);
+        assertThat(steps).as("the traces are not trivial").isGreaterThan(100);
     }
 }

@@ -97,6 +97,37 @@ class QueryTest {
     }
 
     @Test
+    void atADeadlockTheMonitorDecidesAsIfTheLastStateRepeated() throws Exception {
+        String[] formulas = {"F<=5 R1.x == 1", "G<=5 R1.x == 1", "R1.x == 1 U<=4 R2.x == 1", "X X R2.x == 1",
+            "G<=4 (R1.x == 1 => F<=2 R2.x == 1)", "!(R2.x == 1) && F<=3 (R1.x == 1 && X R2.x == 1)"};
+        for (String f : formulas) {
+            Query q = warehouse.parse("P=? [ " + f + " ]");
+            for (int prefix = 0; prefix < 16; prefix++) {
+                for (int last = 0; last < 4; last++) {
+                    int[] trace = {prefix & 3, prefix >> 2, last};
+                    Monitor fed = new Monitor(q.formula(), q.propositions().size(), new double[0]);
+                    Monitor collapsed = new Monitor(q.formula(), q.propositions().size(), new double[0]);
+                    int expected = -1;
+                    for (int i = 0; expected < 0; i++) {
+                        int s = trace[Math.min(i, 2)];
+                        expected = fed.observe(p -> (s >> p & 1) != 0);
+                    }
+                    int actual = -1;
+                    for (int i = 0; i < 2 && actual < 0; i++) {
+                        int s = trace[i];
+                        actual = collapsed.observe(p -> (s >> p & 1) != 0);
+                    }
+                    if (actual < 0) {
+                        int repeated = last;
+                        actual = collapsed.decideOnRepeatedState(p -> (repeated >> p & 1) != 0);
+                    }
+                    assertThat(actual).as("%s on %d %d %d...", f, trace[0], trace[1], last).isEqualTo(expected);
+                }
+            }
+        }
+    }
+
+    @Test
     void okamotoAndClopperPearson() {
         assertThat(Bounds.okamoto(0.01, 0.01)).isEqualTo(26492);
         double[] ci = Bounds.clopperPearson(0, 10, 0.05);

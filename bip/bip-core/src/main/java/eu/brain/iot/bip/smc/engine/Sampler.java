@@ -159,19 +159,17 @@ final class Sampler {
                     monitor.reset();
                     int position = 0;
                     int taken = 0;
-                    boolean dead = false;
                     int r;
                     while ((r = monitor.observe(aps)) < 0) {
                         if (position == max) {
                             break;
                         }
                         position++;
-                        if (!dead) {
-                            if (system.step()) {
-                                taken++;
-                            } else {
-                                dead = true;
-                            }
+                        if (system.step()) {
+                            taken++;
+                        } else {
+                            r = monitor.decideOnRepeatedState(aps);
+                            break;
                         }
                     }
                     if (r == 1) {
@@ -184,8 +182,12 @@ final class Sampler {
             } catch (RuntimeException | StackOverflowError e) {
                 synchronized (lock) {
                     if (failure == null) {
-                        failure = new TraceFailureException("trace " + trace + " (seed " + seed + ") failed after state "
-                                + system.lastStep() + ": " + e, e);
+                        String where = system.lastStep().isEmpty() ? "in its initial state"
+                                : "at a step after " + system.lastStep();
+                        String what = e instanceof eu.brain.iot.bip.smc.runtime.StochasticException ? e.getMessage()
+                                : e.toString();
+                        failure = new TraceFailureException("trace " + trace + " (run seed " + seed + ") failed "
+                                + where + ": " + what, e);
                     }
                     lock.notifyAll();
                 }

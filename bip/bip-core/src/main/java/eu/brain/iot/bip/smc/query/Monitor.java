@@ -147,6 +147,42 @@ public final class Monitor {
         return current == TRUE ? 1 : current == FALSE ? 0 : -1;
     }
 
+    /**
+     * Decides the formula when the trace has deadlocked: the current state repeats for ever, so every temporal
+     * operator's value is that of its operand on this state ({@code X f} is f, {@code l U<=k r} is r). Same answer as
+     * feeding the repeated state until the bounds run out, without the iterations.
+     *
+     * @return 1 when the formula holds, 0 when it does not
+     */
+    public int decideOnRepeatedState(IntPredicate propositions) {
+        state = propositions;
+        epoch++;
+        if (epoch == Integer.MAX_VALUE) {
+            java.util.Arrays.fill(stamp, 0);
+            epoch = 1;
+        }
+        boolean v = constant(current);
+        current = v ? TRUE : FALSE;
+        return v ? 1 : 0;
+    }
+
+    private boolean constant(Node n) {
+        if (n instanceof Until u) {
+            return constant(u.right);
+        } else if (n instanceof Ap a) {
+            return ap(a.index);
+        } else if (n instanceof Const c) {
+            return c.value;
+        } else if (n instanceof Not x) {
+            return !constant(x.operand);
+        } else if (n instanceof And a) {
+            return constant(a.left) && constant(a.right);
+        } else if (n instanceof Or o) {
+            return constant(o.left) || constant(o.right);
+        }
+        return constant(((Next) n).operand);
+    }
+
     private boolean ap(int i) {
         if (stamp[i] != epoch) {
             stamp[i] = epoch;
