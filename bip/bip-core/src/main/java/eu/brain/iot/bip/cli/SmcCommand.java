@@ -237,7 +237,12 @@ final class SmcCommand {
             double rate = done / Math.max(seconds, 1e-9);
             String left = target < 0 || done == 0 ? "until the test decides"
                     : String.format(Locale.ROOT, "%.1f s left", (target - done) / Math.max(rate, 1e-9));
-            err.printf(Locale.ROOT, "\r\033[K%s: %,d%s traces, %,.0f/s, estimate %.4f, %s", query.name(), done,
+            StringBuilder point = new StringBuilder();
+            for (int i = 0; i < params.length; i++) {
+                point.append(i == 0 ? " (" : ", ").append(query.sweeps().get(i).name()).append('=')
+                        .append(Reports.number(params[i])).append(i == params.length - 1 ? ")" : "");
+            }
+            err.printf(Locale.ROOT, "\r\033[K%s%s: %,d%s traces, %,.0f/s, estimate %.4f, %s", query.name(), point, done,
                     target < 0 ? "" : String.format(Locale.ROOT, "/%,d", target), rate,
                     done == 0 ? 0.0 : (double) successes / done, left);
             err.flush();

@@ -35,7 +35,7 @@ import eu.brain.iot.bip.smc.sim.SystemSimulator;
 public final class RequirementsCheck {
 
     /**
-     * @param root the system's compound type, or null (then the file's {@code set root}, else the default)
+     * @param root the system's compound type when the file has no {@code set root} (null: the default)
      * @param reportDirectory where report.txt, report.csv and the plots go, or null for none
      * @param overrides options that win over the file's {@code set} lines (e.g. threads, seed)
      * @param classpath where the class named by {@code set externs} is found
@@ -70,10 +70,8 @@ public final class RequirementsCheck {
         if (diagnostics.hasErrors()) {
             return Optional.empty();
         }
-        String root = request.root();
-        if (root == null && file.settings().containsKey("root")) {
-            root = file.settings().get("root").value();
-        }
+        // the file's own root is the more specific: a plugin-level <root> is usually the deployed system's
+        String root = file.settings().containsKey("root") ? file.settings().get("root").value() : request.root();
         SmcOptions options = SmcOptions.defaults();
         for (Map.Entry<String, RequirementsFile.Setting> s : file.settings().entrySet()) {
             if (s.getKey().equals("root") || s.getKey().equals("externs")) {

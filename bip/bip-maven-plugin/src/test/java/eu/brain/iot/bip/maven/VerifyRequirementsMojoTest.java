@@ -62,12 +62,14 @@ class VerifyRequirementsMojoTest {
     @Test
     void requirementsThatHoldPassAndSweepsArePlotted(@TempDir Path dir) throws Exception {
         VerifyRequirementsMojo mojo = mojo(dir, """
+                set root = Coin.Flip
                 set epsilon = 0.05
                 set seed = 7
                 REQ-heads: P>=0.3 [ F<=1 c at H ]
                 REQ-never: P<=0.01 [ F<=5 c at S && c at H ]
                 phi: P=? [ F<=k c at H ] for k = 0:2:1
                 """);
+        mojo.root = "Deployed.System"; // a plugin-level <root> for bip:generate: the file's own root wins
         mojo.execute();
         assertThat(Files.readString(dir.resolve("target/smc/report.txt"))).contains("holds").doesNotContain("REFUTED");
         assertThat(Files.readString(dir.resolve("target/smc/phi.svg"))).startsWith("<svg").contains("polyline");

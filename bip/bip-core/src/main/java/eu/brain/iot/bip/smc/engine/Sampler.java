@@ -132,6 +132,33 @@ final class Sampler {
         return new Totals(consumed, successes, undecided, steps, System.nanoTime() - start);
     }
 
+    /**
+     * Samples one trace until the monitor knows the formula's value, the trace deadlocks or {@code max} steps.
+     * A small method of its own, so that the JIT compiles this loop early and on its own.
+     *
+     * @return the result (1 holds, 0 does not, -1 undecided) in the high 32 bits, the steps taken in the low ones
+     */
+    private static long trace(SimulatedSystem system, Monitor monitor, IntPredicate aps, long seed, int max) {
+        system.reset(seed);
+        monitor.reset();
+        int position = 0;
+        int taken = 0;
+        int r;
+        while ((r = monitor.observe(aps)) < 0) {
+            if (position == max) {
+                break;
+            }
+            position++;
+            if (system.step()) {
+                taken++;
+            } else {
+                r = monitor.decideOnRepeatedState(aps);
+                break;
+            }
+        }
+        return ((long) r << 32) | (taken & 0xFFFFFFFFL);
+    }
+
     private void work(long limit) {
         SimulatedSystem system = simulator.create(queryIndex, params);
         Monitor monitor = new Monitor(query.formula(), query.propositions().size(), params);
@@ -155,23 +182,9 @@ final class Sampler {
             try {
                 for (int i = 0; i < count; i++) {
                     trace = first + i;
-                    system.reset(TraceRandom.traceSeed(seed, trace));
-                    monitor.reset();
-                    int position = 0;
-                    int taken = 0;
-                    int r;
-                    while ((r = monitor.observe(aps)) < 0) {
-                        if (position == max) {
-                            break;
-                        }
-                        position++;
-                        if (system.step()) {
-                            taken++;
-                        } else {
-                            r = monitor.decideOnRepeatedState(aps);
-                            break;
-                        }
-                    }
+                    long outcome = trace(system, monitor, aps, TraceRandom.traceSeed(seed, trace), max);
+                    int r = (int) (outcome >> 32);
+                    int taken = (int) outcome;
                     if (r == 1) {
                         word |= 1L << i;
                     } else if (r < 0) {

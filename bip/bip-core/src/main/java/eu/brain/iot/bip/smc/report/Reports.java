@@ -22,7 +22,8 @@ public final class Reports {
         return String.join(" ", parts);
     }
 
-    static String number(double v) {
+    /** @return a parameter value: whole numbers without a fraction */
+    public static String number(double v) {
         return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%g", v);
     }
 
