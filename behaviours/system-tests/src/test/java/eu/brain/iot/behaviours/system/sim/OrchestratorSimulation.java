@@ -1,0 +1,32 @@
+package eu.brain.iot.behaviours.system.sim;
+
+import java.util.List;
+import java.util.Set;
+
+import eu.brain.iot.behaviours.orchestrator.impl.OrchestratorExterns;
+import eu.brain.iot.bip.smc.runtime.SimulationExterns;
+import eu.brain.iot.bip.smc.runtime.TraceRandom;
+
+/**
+ * Simulation of the extern functions of {@code behaviours/orchestrator/src/main/bip/Orchestrator.bip}: the deployed
+ * resolution rule itself ({@link OrchestratorExterns}: robot 1 keeps its position, robots 2 and 3 fall back to the
+ * docking area), since it is a pure function. The cells robots take after a resolution are the environment's.
+ */
+public final class OrchestratorSimulation implements SimulationExterns {
+
+    /** The extern functions of Orchestrator.bip this class simulates. */
+    public static final Set<String> FUNCTIONS = Set.of("resolvedPosition1", "resolvedPosition2", "resolvedPosition3");
+
+    private final OrchestratorExterns deployed = new OrchestratorExterns();
+
+    @Override
+    public Object call(String name, List<String> paramTypes, String resultType, Object[] args, TraceRandom random) {
+        double position = args.length == 1 ? ((Number) args[0]).doubleValue() : 0;
+        return switch (name) {
+            case "resolvedPosition1" -> deployed.resolvedPosition1(position);
+            case "resolvedPosition2" -> deployed.resolvedPosition2(position);
+            case "resolvedPosition3" -> deployed.resolvedPosition3(position);
+            default -> throw WarehouseSimulation.unknown(name, paramTypes, getClass());
+        };
+    }
+}
