@@ -13,6 +13,7 @@ import eu.brain.iot.edge.api.GoToCommand;
 import eu.brain.iot.edge.api.OpenDoorCommand;
 import eu.brain.iot.edge.api.PickCartCommand;
 import eu.brain.iot.edge.api.PlaceCartCommand;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
 
 /**
  * Performs a command over the device's REST API and publishes its {@link CommandOutcome}: accepted when the
@@ -23,10 +24,11 @@ final class CommandRunner {
 
     private final FleetPoller fleet;
     private final DeviceStore store;
-    private final EventSink events;
+    /** Hands an outcome to the fleet thread, which publishes it in line with the edge's other events. */
+    private final java.util.function.Consumer<BrainIoTEvent> events;
     private final AnswerParser parser = new AnswerParser();
 
-    CommandRunner(FleetPoller fleet, DeviceStore store, EventSink events) {
+    CommandRunner(FleetPoller fleet, DeviceStore store, java.util.function.Consumer<BrainIoTEvent> events) {
         this.fleet = fleet;
         this.store = store;
         this.events = events;
@@ -66,11 +68,7 @@ final class CommandRunner {
         outcome.accepted = accepted;
         outcome.reason = reason;
         outcome.status = status;
-        try {
-            events.publish(outcome);
-        } catch (RuntimeException e) {
-            // the caller still gets the outcome; the bus said why it could not take it
-        }
+        events.accept(outcome);
         return outcome;
     }
 

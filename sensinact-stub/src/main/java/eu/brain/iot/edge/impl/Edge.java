@@ -9,6 +9,7 @@ import java.util.concurrent.CompletionStage;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceListener;
 import eu.brain.iot.edge.model.api.ResourceValue;
@@ -26,7 +27,7 @@ final class Edge implements DeviceModel, AutoCloseable {
 
     Edge(FleetSettings settings, EventSink events, EdgeLog log) {
         this.poller = new FleetPoller(store, events, log);
-        this.commands = new CommandRunner(poller, store, events);
+        this.commands = new CommandRunner(poller, store, poller::publishFromAnyThread);
         poller.configure(settings);
     }
 
@@ -40,6 +41,28 @@ final class Edge implements DeviceModel, AutoCloseable {
 
     PollStats.Snapshot pollStats() {
         return poller.stats().snapshot();
+    }
+
+    /** Polling and publishing counters, as the exported monitoring API shows them. */
+    PollStatistics statistics() {
+        PollStats.Snapshot s = pollStats();
+        Outbox outbox = poller.outbox();
+        PollStatistics dto = new PollStatistics();
+        FleetSettings settings = settings();
+        dto.fleetUrl = settings == null ? null : settings.baseUrl().toString();
+        dto.sent = s.sent();
+        dto.answered = s.answered();
+        dto.failed = s.failed();
+        dto.skipped = s.skipped();
+        dto.onTime = s.onTime();
+        dto.late = s.late();
+        dto.seconds = s.seconds();
+        dto.deviationP50Millis = s.deviationP50Millis();
+        dto.deviationP99Millis = s.deviationP99Millis();
+        dto.eventsWaiting = outbox.depth();
+        dto.eventsRefused = outbox.refusals();
+        dto.positionsCoalesced = outbox.coalesced();
+        return dto;
     }
 
     void resetPollStats() {

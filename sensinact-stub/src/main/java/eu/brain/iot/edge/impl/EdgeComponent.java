@@ -18,6 +18,8 @@ import org.osgi.service.metatype.annotations.Designate;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollMonitor;
+import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceListener;
 import eu.brain.iot.edge.model.api.ResourceValue;
@@ -27,17 +29,15 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 
 /**
  * The edge as a Declarative Services component: the {@link DeviceModel} service, and a smart behaviour that
- * consumes {@link EdgeCommand}s. Configured by Config Admin (PID {@value #PID}); a new configuration is applied
+ * consumes {@link EdgeCommand}s. Configured by Config Admin (PID {@value EdgeConfig#PID}); a new configuration is applied
  * in place (devices added and removed, nothing restarted).
  */
-@Component(service = { DeviceModel.class, SmartBehaviour.class, EdgeMonitor.class }, configurationPid = EdgeComponent.PID,
+@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class }, configurationPid = EdgeConfig.PID,
         configurationPolicy = ConfigurationPolicy.OPTIONAL)
 @SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
         description = "Performs robot and door commands over the fleet's REST API")
 @Designate(ocd = EdgeConfig.class)
-public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, EdgeMonitor {
-
-    static final String PID = "eu.brain.iot.edge";
+public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, PollMonitor {
 
     private final Edge edge;
     private final Logger log;
@@ -47,7 +47,7 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         FleetSettings settings = checked(config);
-        this.edge = new Edge(settings, bus::deliver, EdgeLog.of(log));
+        this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
         log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
     }
 
@@ -56,7 +56,7 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
         try {
             edge.configure(FleetSettings.from(config));
         } catch (IllegalArgumentException e) {
-            log.error("configuration " + PID + " rejected, the edge keeps its previous one: " + e.getMessage());
+            log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: " + e.getMessage());
         }
     }
 
@@ -64,7 +64,7 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
         try {
             return FleetSettings.from(config);
         } catch (IllegalArgumentException e) {
-            log.error("configuration " + PID + " rejected, the edge does not start: " + e.getMessage());
+            log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
             throw e;
         }
     }
@@ -106,12 +106,7 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     }
 
     @Override
-    public PollStats.Snapshot pollStats() {
-        return edge.pollStats();
-    }
-
-    @Override
-    public String fleetUrl() {
-        return String.valueOf(edge.settings() == null ? "(not configured yet)" : edge.settings().baseUrl());
+    public PollStatistics statistics() {
+        return edge.statistics();
     }
 }

@@ -3,10 +3,13 @@ package eu.brain.iot.edge.impl;
 import org.osgi.service.metatype.annotations.AttributeDefinition;
 import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
-/** Configuration of the edge (PID {@value EdgeComponent#PID}); every value has a default that suits robot-sim. */
+/** Configuration of the edge (PID {@value #PID}); every value has a default that suits robot-sim. */
 @ObjectClassDefinition(name = "BRAIN-IoT edge (sensiNact-style gateway)",
         description = "Where the robot fleet answers, what to poll and how often")
 @interface EdgeConfig {
+
+    /** The configuration PID; the edge's core names it in its messages, the component is configured by it. */
+    String PID = "eu.brain.iot.edge";
 
     @AttributeDefinition(description = "Base URL of the fleet's REST API (robot-sim: one port for every robot and door)")
     String fleet_url() default "http://127.0.0.1:8090/";

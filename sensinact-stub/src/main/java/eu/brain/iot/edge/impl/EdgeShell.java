@@ -7,6 +7,8 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollMonitor;
+import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceValue;
 
@@ -16,10 +18,10 @@ import eu.brain.iot.edge.model.api.ResourceValue;
 public final class EdgeShell {
 
     private final DeviceModel model;
-    private final EdgeMonitor monitor;
+    private final PollMonitor monitor;
 
     @Activate
-    public EdgeShell(@Reference DeviceModel model, @Reference EdgeMonitor monitor) {
+    public EdgeShell(@Reference DeviceModel model, @Reference PollMonitor monitor) {
         this.model = model;
         this.monitor = monitor;
     }
@@ -73,10 +75,15 @@ public final class EdgeShell {
 
     /** Polling counters since the edge started. */
     public String stats() {
-        PollStats.Snapshot s = monitor.pollStats();
+        PollStatistics s = monitor.statistics();
+        long due = s.onTime + s.late + s.failed + s.skipped;
         return String.format("fleet %s%npolls sent %d, answered %d (%.1f/s), failed %d, skipped %d%n"
-                + "on time %.2f%% (%d on time, %d late)%n", monitor.fleetUrl(), s.sent(), s.answered(),
-                s.pollsPerSecond(), s.failed(), s.skipped(), 100 * s.onTimeShare(), s.onTime(), s.late());
+                + "on time %.2f%% (%d on time, %d late)%n"
+                + "events waiting for the bus %d (refused %d times), robot positions coalesced %d%n",
+                s.fleetUrl == null ? "(not configured yet)" : s.fleetUrl, s.sent, s.answered,
+                s.seconds <= 0 ? 0.0 : s.answered / s.seconds, s.failed, s.skipped,
+                due == 0 ? 100.0 : 100.0 * s.onTime / due, s.onTime, s.late, s.eventsWaiting, s.eventsRefused,
+                s.positionsCoalesced);
     }
 
     private static String status(ProviderSnapshot p) {

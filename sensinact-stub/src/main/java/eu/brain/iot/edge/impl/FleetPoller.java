@@ -69,7 +69,7 @@ final class FleetPoller implements AutoCloseable {
         return t;
     });
     private final DeviceStore store;
-    private final EventSink events;
+    private final Outbox outbox;
     private final EdgeLog log;
     private final AnswerParser parser = new AnswerParser();
     private final PollStats stats = new PollStats();
@@ -96,9 +96,22 @@ final class FleetPoller implements AutoCloseable {
 
     FleetPoller(DeviceStore store, EventSink events, EdgeLog log) {
         this.store = store;
-        this.events = events;
+        this.outbox = new Outbox(events, log);
         this.log = log;
-        this.missions = new MissionTracker(parser, this::publish, log);
+        this.missions = new MissionTracker(parser, outbox, log);
+    }
+
+    /** Publish an event from any thread: it joins the edge's events on the fleet thread (see {@link Outbox}). */
+    void publishFromAnyThread(BrainIoTEvent event) {
+        try {
+            fleet.execute(() -> outbox.publish(event));
+        } catch (java.util.concurrent.RejectedExecutionException closed) {
+            log.warn("the edge is stopping: " + event.getClass().getSimpleName() + " not published");
+        }
+    }
+
+    Outbox outbox() {
+        return outbox;
     }
 
     /** Applies a configuration (the first one, or a new one): devices are added and removed, nothing restarts. */
@@ -181,7 +194,7 @@ final class FleetPoller implements AutoCloseable {
         if (discoveryFailures == 1) {
             log.warn("cannot list the fleet at " + asked.baseUrl() + " (" + result + "); is robot-sim running? "
                     + "Retrying every " + delay + " ms or more, up to backoff.max.ms; or set robots and doors in "
-                    + "the configuration " + EdgeComponent.PID);
+                    + "the configuration " + EdgeConfig.PID);
         }
         discovery = fleet.schedule(this::discover, delay, TimeUnit.MILLISECONDS);
     }
@@ -247,6 +260,7 @@ final class FleetPoller implements AutoCloseable {
         tick = null;
         ticking = true;
         try {
+            outbox.flush();
             for (Completion c; (c = completions.poll()) != null; ) {
                 pollsInFlight--;
                 completed(c.device(), c.answer(), c.result());
@@ -267,7 +281,7 @@ final class FleetPoller implements AutoCloseable {
             if (head != null) {
                 next = head.at();
             }
-            if (pollsInFlight > 0 || !completions.isEmpty()) {
+            if (pollsInFlight > 0 || !completions.isEmpty() || !outbox.isEmpty()) {
                 next = Math.min(next, now);
             }
             if (next != Long.MAX_VALUE) {
@@ -454,11 +468,7 @@ final class FleetPoller implements AutoCloseable {
     }
 
     private void publish(BrainIoTEvent event) {
-        try {
-            events.publish(event);
-        } catch (RuntimeException e) {
-            log.warn("could not publish " + event.getClass().getSimpleName() + ": " + e.getMessage());
-        }
+        outbox.publish(event);
     }
 
     private static long backoff(FleetSettings s, int attempt) {

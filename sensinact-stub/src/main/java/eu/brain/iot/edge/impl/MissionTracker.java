@@ -15,10 +15,10 @@ import java.util.concurrent.Executor;
 final class MissionTracker {
 
     private final AnswerParser parser;
-    private final EventSink events;
+    private final Outbox events;
     private final EdgeLog log;
 
-    MissionTracker(AnswerParser parser, EventSink events, EdgeLog log) {
+    MissionTracker(AnswerParser parser, Outbox events, EdgeLog log) {
         this.parser = parser;
         this.events = events;
         this.log = log;

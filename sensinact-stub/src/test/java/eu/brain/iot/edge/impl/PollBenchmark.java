@@ -326,9 +326,10 @@ public final class PollBenchmark {
         final Map<String, LongAdder> byType = new ConcurrentHashMap<>();
 
         @Override
-        public void publish(BrainIoTEvent event) {
+        public boolean offer(BrainIoTEvent event) {
             total.increment();
             byType.computeIfAbsent(event.getClass().getSimpleName(), k -> new LongAdder()).increment();
+            return true;
         }
     }
 

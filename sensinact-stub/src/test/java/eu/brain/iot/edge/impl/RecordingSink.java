@@ -11,9 +11,19 @@ final class RecordingSink implements EventSink {
 
     final List<BrainIoTEvent> events = new CopyOnWriteArrayList<>();
 
+    /** While false, every event is refused, as a bus whose behaviour queue is full refuses it. */
+    volatile boolean accepting = true;
+    /** Events refused so far. */
+    final java.util.concurrent.atomic.AtomicLong refused = new java.util.concurrent.atomic.AtomicLong();
+
     @Override
-    public void publish(BrainIoTEvent event) {
+    public boolean offer(BrainIoTEvent event) {
+        if (!accepting) {
+            refused.incrementAndGet();
+            return false;
+        }
         events.add(event);
+        return true;
     }
 
     <E extends BrainIoTEvent> List<E> of(Class<E> type) {

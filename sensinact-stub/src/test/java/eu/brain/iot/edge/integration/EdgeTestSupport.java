@@ -87,7 +87,13 @@ final class EdgeTestSupport implements AutoCloseable {
      */
     static EdgeTestSupport start(BundleContext context, ConfigurationAdmin cm, DeviceModel model,
             Map<String, Object> settings) throws Exception {
-        RobotSim sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
+        return start(context, cm, model, SimConfig.builder().manualStep(true).build(), settings);
+    }
+
+    /** Like {@link #start(BundleContext, ConfigurationAdmin, DeviceModel, Map)}, with a simulator of this configuration. */
+    static EdgeTestSupport start(BundleContext context, ConfigurationAdmin cm, DeviceModel model, SimConfig simConfig,
+            Map<String, Object> settings) throws Exception {
+        RobotSim sim = RobotSim.start(simConfig);
         try {
             EdgeTestSupport edge = new EdgeTestSupport(sim, awaitRest(context), cm, context);
             Instant configuredAt = Instant.now();
