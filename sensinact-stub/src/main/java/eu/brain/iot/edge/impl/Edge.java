@@ -16,18 +16,28 @@ import eu.brain.iot.edge.model.api.ResourceValue;
 import eu.brain.iot.edge.model.api.UnknownResourceException;
 
 /**
- * The edge without a framework: the device model, the poller and the command runner put together. The DS
- * component wraps it; tests and the benchmark use it directly.
+ * The edge without a framework, put together: one fleet thread; the {@link FleetApi} (the fleet's REST API)
+ * shared by polling, mission tracking and commands; the {@link DeviceStore} where every change happens; the
+ * {@link EdgeEvents} derived from its changes and the {@link Outbox} they leave by; the {@link FleetPoller}, which
+ * only schedules polls. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
+ * then resource listeners (SSE) and edge events (bus). The DS component wraps it; tests and the benchmark use it
+ * directly.
  */
 final class Edge implements DeviceModel, AutoCloseable {
 
-    private final DeviceStore store = new DeviceStore();
+    private final FleetApi api = new FleetApi();
+    private final Outbox outbox;
+    private final DeviceStore store;
     private final FleetPoller poller;
     private final CommandRunner commands;
 
     Edge(FleetSettings settings, EventSink events, EdgeLog log) {
-        this.poller = new FleetPoller(store, events, log);
-        this.commands = new CommandRunner(poller, store, poller::publishFromAnyThread);
+        FleetThread fleet = new FleetThread();
+        this.outbox = new Outbox(events, log);
+        this.store = new DeviceStore(new EdgeEvents(outbox, new MissionTracker(api, fleet, outbox, log)));
+        this.poller = new FleetPoller(fleet, api, store, outbox, log);
+        this.commands = new CommandRunner(api, store, event -> fleet.run(() -> outbox.publish(event),
+                "publishing " + event.getClass().getSimpleName(), log));
         poller.configure(settings);
     }
 
@@ -36,7 +46,7 @@ final class Edge implements DeviceModel, AutoCloseable {
     }
 
     FleetSettings settings() {
-        return poller.settings();
+        return api.settings();
     }
 
     PollStats.Snapshot pollStats() {
@@ -46,7 +56,6 @@ final class Edge implements DeviceModel, AutoCloseable {
     /** Polling and publishing counters, as the exported monitoring API shows them. */
     PollStatistics statistics() {
         PollStats.Snapshot s = pollStats();
-        Outbox outbox = poller.outbox();
         PollStatistics dto = new PollStatistics();
         FleetSettings settings = settings();
         dto.fleetUrl = settings == null ? null : settings.baseUrl().toString();
@@ -97,17 +106,17 @@ final class Edge implements DeviceModel, AutoCloseable {
     @Override
     public CompletionStage<CommandOutcome> act(String providerId, String service, String action,
             Map<String, Object> parameters) {
-        String kind = store.kind(providerId);
+        DeviceKind kind = store.kind(providerId);
         if (kind == null) {
             throw new UnknownResourceException("no provider '" + providerId + "' (robots: "
-                    + store.ids(DeviceKind.ROBOT.label) + ", doors: " + store.ids(DeviceKind.DOOR.label) + ")");
+                    + store.ids(DeviceKind.ROBOT) + ", doors: " + store.ids(DeviceKind.DOOR) + ")");
         }
-        DeviceKind k = DeviceKind.ROBOT.label.equals(kind) ? DeviceKind.ROBOT : DeviceKind.DOOR;
-        return execute(Actions.command(providerId, k, service, action, parameters == null ? Map.of() : parameters));
+        return execute(Actions.command(providerId, kind, service, action, parameters == null ? Map.of() : parameters));
     }
 
     @Override
     public void close() {
         poller.close();
+        api.close();
     }
 }

@@ -1,9 +1,7 @@
 package eu.brain.iot.edge.impl;
 
-import java.net.URI;
 import java.time.Instant;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.HashMap;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -11,22 +9,16 @@ import java.util.Map;
 import java.util.PriorityQueue;
 import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
-import java.util.concurrent.Executors;
-import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 
-import eu.brain.iot.edge.api.DeviceRecovered;
-import eu.brain.iot.edge.api.DeviceUnreachable;
-import eu.brain.iot.edge.model.api.ResourceStatus;
-import eu.brain.iot.eventing.api.BrainIoTEvent;
-
 /**
- * Polls every device of the fleet once per period and turns what changed into model values and events.
+ * Schedules the polls of every device of the fleet, once per period, and hands each poll's result to the
+ * {@link DeviceStore}, where the change happens (and from which the SSE updates and the bus events leave).
  * <p>
- * Threads: one <em>fleet thread</em> owns all of this class's state, the {@link PolledDevice}s and every write to
- * the {@link DeviceStore}, and publishes the events, so none of it needs a lock. The HTTP client's threads only
- * send, receive and parse, then hand the result to the fleet thread. Polls are scheduled at a fixed rate, spread
+ * Threads: one <em>fleet thread</em> owns all of this class's state and the {@link PolledDevice}s, so none of it
+ * needs a lock. The {@link FleetApi}'s HTTP threads only send, receive and parse, then hand a typed
+ * {@link PollResult} to the fleet thread. Polls are scheduled at a fixed rate, spread
  * over the period, and never wait for each other's answers: a slow device delays nobody (its next poll is
  * skipped while one is still in flight). A device that keeps failing is reported once, then polled with backoff.
  * <p>
@@ -36,13 +28,7 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  * up to one tick after it came, and a fleet of 10,000 robots costs a few hundred wake-ups a second rather than
  * tens of thousands; the HTTP threads hand answers over through a queue without waking the fleet thread.
  */
-final class FleetPoller implements AutoCloseable {
-
-    /**
-     * What {@link #read} returns for an answer byte for byte equal to the one the device's values came from (a
-     * fleet serves the same bytes while nothing changes, robot-sim does): no parsing, no store writes, no events.
-     */
-    private static final Object UNCHANGED = new Object();
+final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevice> {
 
     /** The longest time between two ticks while polls are due or answers are awaited. */
     static final long MAX_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
@@ -55,30 +41,19 @@ final class FleetPoller implements AutoCloseable {
         }
     }
 
-    /** What {@link #read} returns for a poll that never left the edge: every connection stayed busy. */
-    private record NotSent(String reason) {
-    }
-
     /** A poll's outcome, handed from an HTTP thread to the fleet thread. */
-    private record Completion(PolledDevice device, HttpAnswer answer, Object result) {
+    private record Completion(PolledDevice device, PollResult result) {
     }
 
-    private final ScheduledExecutorService fleet = Executors.newSingleThreadScheduledExecutor(r -> {
-        Thread t = new Thread(r, "edge-fleet");
-        t.setDaemon(true);
-        return t;
-    });
+    private final FleetThread fleet;
+    private final FleetApi api;
     private final DeviceStore store;
     private final Outbox outbox;
     private final EdgeLog log;
-    private final AnswerParser parser = new AnswerParser();
     private final PollStats stats = new PollStats();
-    private final MissionTracker missions;
 
-    /** Written on the fleet thread, read by command senders. */
-    private volatile FleetSettings settings;
-    private volatile FleetHttpClient client;
     // fleet thread only
+    private FleetSettings settings;
     private final Map<String, PolledDevice> devices = new HashMap<>();
     private ScheduledFuture<?> discovery;
     private int discoveryFailures;
@@ -94,37 +69,17 @@ final class FleetPoller implements AutoCloseable {
     /** Answers of polls, from the HTTP threads, handled at the next tick. */
     private final Queue<Completion> completions = new ConcurrentLinkedQueue<>();
 
-    FleetPoller(DeviceStore store, EventSink events, EdgeLog log) {
+    FleetPoller(FleetThread fleet, FleetApi api, DeviceStore store, Outbox outbox, EdgeLog log) {
+        this.fleet = fleet;
+        this.api = api;
         this.store = store;
-        this.outbox = new Outbox(events, log);
+        this.outbox = outbox;
         this.log = log;
-        this.missions = new MissionTracker(parser, outbox, log);
-    }
-
-    /** Publish an event from any thread: it joins the edge's events on the fleet thread (see {@link Outbox}). */
-    void publishFromAnyThread(BrainIoTEvent event) {
-        try {
-            fleet.execute(() -> outbox.publish(event));
-        } catch (java.util.concurrent.RejectedExecutionException closed) {
-            log.warn("the edge is stopping: " + event.getClass().getSimpleName() + " not published");
-        }
-    }
-
-    Outbox outbox() {
-        return outbox;
     }
 
     /** Applies a configuration (the first one, or a new one): devices are added and removed, nothing restarts. */
     void configure(FleetSettings next) {
         fleet.execute(() -> apply(next));
-    }
-
-    FleetSettings settings() {
-        return settings;
-    }
-
-    FleetHttpClient client() {
-        return client;
     }
 
     PollStats stats() {
@@ -133,13 +88,7 @@ final class FleetPoller implements AutoCloseable {
 
     private void apply(FleetSettings next) {
         FleetSettings previous = settings;
-        if (client == null || !next.sameConnection(previous)) {
-            FleetHttpClient old = client;
-            client = new FleetHttpClient(next.ioThreads(), next.maxConnections(), next.timeoutMillis());
-            if (old != null) {
-                old.close();
-            }
-        }
+        api.configure(next);
         settings = next;
         if (previous != null && !previous.baseUrl().equals(next.baseUrl())) {
             setDevices(Map.of()); // every device answers elsewhere now
@@ -156,43 +105,34 @@ final class FleetPoller implements AutoCloseable {
     }
 
     private void discover() {
-        FleetSettings s = settings;
-        client.get(s.baseUrl()).whenComplete((answer, error) -> {
-            Object result;
-            try {
-                if (error != null) {
-                    throw error instanceof DeviceIOException d ? d : new DeviceIOException(String.valueOf(error));
-                }
-                if (!answer.ok()) {
-                    throw new DeviceIOException("HTTP " + answer.status() + ": " + parser.errorText(answer));
-                }
-                result = parser.inventory(answer.body());
-            } catch (Throwable t) {
-                result = t.getMessage();
+        FleetSettings asked = settings;
+        api.inventory().whenComplete((inventory, error) -> fleet.execute(() -> {
+            if (asked != settings) {
+                return; // configured again meanwhile
             }
-            Object r = result;
-            fleet.execute(() -> discovered(s, r));
-        });
+            if (error == null) {
+                discovered(asked, inventory);
+            } else {
+                notDiscovered(asked, error.getCause() != null ? error.getCause().getMessage() : error.getMessage());
+            }
+        }));
     }
 
-    private void discovered(FleetSettings asked, Object result) {
-        if (asked != settings) {
-            return; // configured again meanwhile
-        }
-        if (result instanceof AnswerParser.Inventory inventory) {
-            discoveryFailures = 0;
-            Map<String, DeviceKind> wanted = new LinkedHashMap<>();
-            inventory.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
-            inventory.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
-            log.info("fleet at " + asked.baseUrl() + ": " + inventory.robots().size() + " robots, "
-                    + inventory.doors().size() + " doors");
-            setDevices(wanted);
-            return;
-        }
+    private void discovered(FleetSettings asked, AnswerParser.Inventory inventory) {
+        discoveryFailures = 0;
+        Map<String, DeviceKind> wanted = new LinkedHashMap<>();
+        inventory.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
+        inventory.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
+        log.info("fleet at " + asked.baseUrl() + ": " + inventory.robots().size() + " robots, "
+                + inventory.doors().size() + " doors");
+        setDevices(wanted);
+    }
+
+    private void notDiscovered(FleetSettings asked, String problem) {
         discoveryFailures++;
         long delay = backoff(asked, discoveryFailures);
         if (discoveryFailures == 1) {
-            log.warn("cannot list the fleet at " + asked.baseUrl() + " (" + result + "); is robot-sim running? "
+            log.warn("cannot list the fleet at " + asked.baseUrl() + " (" + problem + "); is robot-sim running? "
                     + "Retrying every " + delay + " ms or more, up to backoff.max.ms; or set robots and doors in "
                     + "the configuration " + EdgeConfig.PID);
         }
@@ -218,9 +158,9 @@ final class FleetPoller implements AutoCloseable {
         List<PolledDevice> added = new ArrayList<>();
         wanted.forEach((id, kind) -> {
             if (!devices.containsKey(id)) {
-                PolledDevice d = new PolledDevice(id, kind, kind.stateUri(settings.baseUrl(), id));
+                PolledDevice d = new PolledDevice(id, kind, api.stateUri(id, kind));
                 devices.put(id, d);
-                store.add(id, kind.label, kind.actions);
+                store.add(id, kind);
                 added.add(d);
             }
         });
@@ -263,7 +203,7 @@ final class FleetPoller implements AutoCloseable {
             outbox.flush();
             for (Completion c; (c = completions.poll()) != null; ) {
                 pollsInFlight--;
-                completed(c.device(), c.answer(), c.result());
+                completed(c.device(), c.result());
             }
             long now = System.nanoTime();
             for (Due head; (head = due.peek()) != null && head.at() <= now; ) {
@@ -307,56 +247,22 @@ final class FleetPoller implements AutoCloseable {
             d.inFlight = true;
             pollsInFlight++;
             stats.sent();
-            byte[] previous = d.lastBody; // immutable: the HTTP thread only compares with it
-            client.get(d.stateUri).whenComplete((answer, error) -> {
-                Object result = read(d, previous, answer, error);
-                completions.add(new Completion(d, answer, result)); // handled at the next tick
-            });
+            // lastBody is immutable: the HTTP thread only compares with it
+            api.poll(d.id, d.kind, d.stateUri, d.lastBody)
+                    .thenAccept(result -> completions.add(new Completion(d, result))); // handled at the next tick
         } catch (RuntimeException e) {
             // Never let one device's trouble end the fleet thread's schedule of it.
             log.warn("polling " + d.id + " failed unexpectedly: " + e);
         }
     }
 
-    /**
-     * On an HTTP thread: the parsed answer, {@link #UNCHANGED} when its bytes are those of the answer the device's
-     * current values came from, or a failure's description (a String).
-     */
-    private Object read(PolledDevice d, byte[] previous, HttpAnswer answer, Throwable error) {
-        if (error != null) {
-            if (error instanceof DeviceIOException e && e.notSent) {
-                return new NotSent(e.getMessage());
-            }
-            return error instanceof DeviceIOException ? error.getMessage() : String.valueOf(error);
-        }
-        if (!answer.ok()) {
-            return "HTTP " + answer.status() + ": " + parser.errorText(answer);
-        }
-        if (previous != null && Arrays.equals(previous, answer.body())) {
-            return UNCHANGED;
-        }
-        try {
-            return d.kind == DeviceKind.ROBOT ? parser.robot(d.id, answer.body()) : parser.door(d.id, answer.body());
-        } catch (DeviceIOException e) {
-            return e.getMessage();
-        } catch (RuntimeException e) {
-            return "unreadable answer: " + e;
-        }
-    }
-
-    private void completed(PolledDevice d, HttpAnswer answer, Object result) {
+    private void completed(PolledDevice d, PollResult result) {
         d.inFlight = false;
         if (d.removed) {
             return;
         }
         try {
-            if (result instanceof String failure) {
-                failed(d, failure);
-            } else if (result instanceof NotSent notSent) {
-                notSent(d, notSent.reason());
-            } else {
-                answered(d, answer, result);
-            }
+            result.handle(d, this);
         } catch (RuntimeException e) {
             log.warn("handling the answer of " + d.id + " failed unexpectedly: " + e);
         }
@@ -368,11 +274,13 @@ final class FleetPoller implements AutoCloseable {
      * failing, so an overloaded edge (say, while a large fleet is first polled on a cold JVM) does not report
      * healthy devices unreachable. One warning a minute for the whole fleet.
      */
-    private void notSent(PolledDevice d, String reason) {
+    @Override
+    public void notSent(PolledDevice d, PollResult.NotSent notSent) {
+        String reason = notSent.reason();
         stats.failed();
         d.lastAnsweredSentNanos = -1;
         if (!d.unreachable) {
-            store.failed(d.id, ResourceStatus.STALE, reason);
+            store.stale(d.id, reason);
         }
         notSentSinceWarning++;
         long now = System.currentTimeMillis();
@@ -385,31 +293,27 @@ final class FleetPoller implements AutoCloseable {
         }
     }
 
-    private void failed(PolledDevice d, String reason) {
+    @Override
+    public void failed(PolledDevice d, PollResult.Failed failure) {
+        String reason = failure.reason();
         stats.failed();
         d.failures++;
         d.lastAnsweredSentNanos = -1;
         FleetSettings s = settings;
         if (d.unreachable) {
-            store.failed(d.id, ResourceStatus.UNREACHABLE, reason);
+            store.unreachable(d.id, reason, d.failures);
             return;
         }
         if (d.failures < s.unreachableAfter()) {
-            store.failed(d.id, ResourceStatus.STALE, reason);
+            store.stale(d.id, reason);
             warnRateLimited(d, d.kind.label + " " + d.id + ": poll failed: " + reason);
             return;
         }
         d.unreachable = true;
         d.unreachableSinceMillis = System.currentTimeMillis();
-        DeviceUnreachable e = new DeviceUnreachable();
-        e.deviceId = d.id;
-        e.deviceKind = d.kind.label;
-        e.reason = reason;
-        e.failures = d.failures;
-        // the event right after the status, the log line after both: whoever sees UNREACHABLE in the model finds
-        // the event (almost) at once, not after a write to a slow log
-        store.failed(d.id, ResourceStatus.UNREACHABLE, reason);
-        publish(e);
+        // the store tells the status and the event (DeviceUnreachable) first, the log line comes after both:
+        // whoever sees UNREACHABLE in the model finds the event (almost) at once, not after a write to a slow log
+        store.unreachable(d.id, reason, d.failures);
         log.warn(d.kind.label + " " + d.id + " is unreachable after " + d.failures + " failed polls (last: "
                 + reason + "); polling it with backoff up to " + s.backoffMaxMillis() + " ms until it answers");
     }
@@ -427,48 +331,34 @@ final class FleetPoller implements AutoCloseable {
         log.warn(message + held);
     }
 
-    private void answered(PolledDevice d, HttpAnswer answer, Object parsed) {
+    @Override
+    public void answered(PolledDevice d, PollResult.Answered answer) {
+        Instant now = answeredAt(d, answer.sentNanos());
+        d.lastBody = answer.body();
+        store.update(d.id, answer.answer(), now);
+    }
+
+    @Override
+    public void unchanged(PolledDevice d, PollResult.Unchanged unchanged) {
+        // the same answer again: the same values, so nothing to set and no event
+        store.unchanged(d.id, answeredAt(d, unchanged.sentNanos()));
+    }
+
+    /** Counts an answered poll and brings a device that was unreachable back to the normal cadence. */
+    private Instant answeredAt(PolledDevice d, long sentNanos) {
         FleetSettings s = settings;
-        long sentNanos = answer.sentNanos();
         long interval = d.lastAnsweredSentNanos < 0 || d.unreachable ? -1 : sentNanos - d.lastAnsweredSentNanos;
         stats.answered(interval, TimeUnit.MILLISECONDS.toNanos(s.periodMillis()));
         d.lastAnsweredSentNanos = sentNanos;
-        Instant now = Instant.now();
         if (d.unreachable) {
             long down = System.currentTimeMillis() - d.unreachableSinceMillis;
             log.info(d.kind.label + " " + d.id + " answers again after " + down + " ms");
-            DeviceRecovered e = new DeviceRecovered();
-            e.deviceId = d.id;
-            e.deviceKind = d.kind.label;
-            e.downMillis = down;
-            publish(e);
             // back to the normal cadence now, rather than after the backoff delay already scheduled
             schedule(d, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(s.periodMillis()));
         }
         d.unreachable = false;
         d.failures = 0;
-        store.answered(d.id, now);
-        if (parsed == UNCHANGED) {
-            return; // the same answer again: the same values, so nothing to set and no event
-        }
-        d.lastBody = answer.body();
-        List<BrainIoTEvent> changes;
-        if (parsed instanceof RobotAnswer robot) {
-            RobotAnswer before = (RobotAnswer) d.last;
-            changes = ChangeDetector.robot(store, before, robot, now);
-            d.last = robot;
-            changes.forEach(this::publish);
-            missions.track(d, before, robot, client, s.baseUrl(), fleet, now);
-        } else {
-            DoorAnswer door = (DoorAnswer) parsed;
-            changes = ChangeDetector.door(store, (DoorAnswer) d.last, door, now);
-            d.last = door;
-            changes.forEach(this::publish);
-        }
-    }
-
-    private void publish(BrainIoTEvent event) {
-        outbox.publish(event);
+        return Instant.now();
     }
 
     private static long backoff(FleetSettings s, int attempt) {
@@ -476,17 +366,8 @@ final class FleetPoller implements AutoCloseable {
         return Math.min(delay, s.backoffMaxMillis());
     }
 
-    /** The URI of a robot's mission component, for commands and history queries. */
-    static URI component(URI base, String robotId, String component, String verb) {
-        return base.resolve(robotId + "/robot_local_control/NavigationComponent/" + component + "/" + verb);
-    }
-
     @Override
     public void close() {
-        fleet.shutdownNow();
-        FleetHttpClient c = client;
-        if (c != null) {
-            c.close();
-        }
+        fleet.shutdown();
     }
 }

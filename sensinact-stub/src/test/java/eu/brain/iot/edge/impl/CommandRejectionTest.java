@@ -24,6 +24,8 @@ class CommandRejectionTest {
     @RegisterExtension
     final EdgeOnSim fleet = new EdgeOnSim(url -> FleetSettings.of(url, List.of(), List.of(), 100, 1000, 8, 1, 2, 400));
 
+    private final java.util.concurrent.atomic.AtomicInteger commands = new java.util.concurrent.atomic.AtomicInteger();
+
     @BeforeEach
     void allPolled() {
         fleet.awaitAllOk(4);
@@ -31,10 +33,12 @@ class CommandRejectionTest {
 
     private CommandOutcome run(EdgeCommand command, String device) {
         command.deviceId = device;
-        command.commandId = "c-" + fleet.sink.events.size();
+        command.commandId = "c-" + commands.incrementAndGet();
         CommandOutcome outcome = fleet.edge.execute(command).join();
         assertThat(outcome.commandId).isEqualTo(command.commandId);
-        assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome);
+        // published too, by the fleet thread, in line with the edge's other events
+        await().atMost(EdgeOnSim.DEADLINE)
+                .untilAsserted(() -> assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome));
         return outcome;
     }
 

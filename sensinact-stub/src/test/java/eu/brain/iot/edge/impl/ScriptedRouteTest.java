@@ -113,7 +113,8 @@ class ScriptedRouteTest {
     private long accept(EdgeCommand command) {
         CommandOutcome outcome = fleet.edge.execute(command).join();
         assertThat(outcome.accepted).as(outcome.reason).isTrue();
-        assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome);
+        // published too, by the fleet thread, in line with the edge's other events
+        await().atMost(DEADLINE).untilAsserted(() -> assertThat(fleet.sink.of(CommandOutcome.class)).contains(outcome));
         return outcome.missionId == null ? -1 : outcome.missionId;
     }
 }
