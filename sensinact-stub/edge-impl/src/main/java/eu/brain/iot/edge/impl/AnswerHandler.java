@@ -4,33 +4,33 @@ import io.netty.channel.ChannelHandlerContext;
 import io.netty.channel.SimpleChannelInboundHandler;
 import io.netty.handler.codec.http.FullHttpResponse;
 
-/** Hands each answer, or the connection's end, to the connection's current {@link Exchange}. */
+/** Hands each answer, or the connection's end, to the connection's current {@link InFlightRequest}. */
 final class AnswerHandler extends SimpleChannelInboundHandler<FullHttpResponse> {
 
     @Override
     protected void channelRead0(ChannelHandlerContext ctx, FullHttpResponse response) {
-        Exchange exchange = ctx.channel().attr(Exchange.KEY).get();
-        if (exchange == null) {
+        InFlightRequest request = ctx.channel().attr(InFlightRequest.KEY).get();
+        if (request == null) {
             ctx.close(); // an answer nobody asked for: this connection cannot be trusted any more
             return;
         }
-        exchange.complete(response);
+        request.complete(response);
     }
 
     @Override
     public void channelInactive(ChannelHandlerContext ctx) throws Exception {
-        Exchange exchange = ctx.channel().attr(Exchange.KEY).get();
-        if (exchange != null) {
-            exchange.fail("the device closed the connection without answering");
+        InFlightRequest request = ctx.channel().attr(InFlightRequest.KEY).get();
+        if (request != null) {
+            request.fail("the device closed the connection without answering");
         }
         super.channelInactive(ctx);
     }
 
     @Override
     public void exceptionCaught(ChannelHandlerContext ctx, Throwable cause) {
-        Exchange exchange = ctx.channel().attr(Exchange.KEY).get();
-        if (exchange != null) {
-            exchange.fail("connection error: " + cause.getMessage());
+        InFlightRequest request = ctx.channel().attr(InFlightRequest.KEY).get();
+        if (request != null) {
+            request.fail("connection error: " + cause.getMessage());
         } else {
             ctx.close();
         }

@@ -88,16 +88,16 @@ final class FleetHttpClient implements AutoCloseable {
                 return;
             }
             Channel channel = acquired.getNow();
-            Exchange exchange = new Exchange(answer, pool, channel, uri);
-            channel.attr(Exchange.KEY).set(exchange);
-            exchange.timeout = channel.eventLoop().schedule(
-                    () -> exchange.fail("no answer within " + timeoutMillis + " ms"), timeoutMillis,
+            InFlightRequest inFlight = new InFlightRequest(answer, pool, channel, uri);
+            channel.attr(InFlightRequest.KEY).set(inFlight);
+            inFlight.timeout = channel.eventLoop().schedule(
+                    () -> inFlight.fail("no answer within " + timeoutMillis + " ms"), timeoutMillis,
                     TimeUnit.MILLISECONDS);
             FullHttpRequest request = request(method, uri, json);
-            exchange.sentNanos = System.nanoTime();
+            inFlight.sentNanos = System.nanoTime();
             channel.writeAndFlush(request).addListener(written -> {
                 if (!written.isSuccess()) {
-                    exchange.fail("could not send the request: " + written.cause());
+                    inFlight.fail("could not send the request: " + written.cause());
                 }
             });
         });

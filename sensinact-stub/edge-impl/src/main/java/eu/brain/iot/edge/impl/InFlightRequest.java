@@ -17,9 +17,9 @@ import io.netty.util.concurrent.ScheduledFuture;
  * comes first ({@link #done} decides: they may race on different threads). Ends by giving the connection back
  * to the pool: open for the next request after a clean answer, closed after anything else.
  */
-final class Exchange {
+final class InFlightRequest {
 
-    static final AttributeKey<Exchange> KEY = AttributeKey.valueOf("eu.brain.iot.edge.exchange");
+    static final AttributeKey<InFlightRequest> KEY = AttributeKey.valueOf("eu.brain.iot.edge.request");
 
     private final CompletableFuture<HttpAnswer> answer;
     private final ChannelPool pool;
@@ -29,7 +29,7 @@ final class Exchange {
     volatile ScheduledFuture<?> timeout;
     volatile long sentNanos;
 
-    Exchange(CompletableFuture<HttpAnswer> answer, ChannelPool pool, Channel channel, URI uri) {
+    InFlightRequest(CompletableFuture<HttpAnswer> answer, ChannelPool pool, Channel channel, URI uri) {
         this.answer = answer;
         this.pool = pool;
         this.channel = channel;
