@@ -5,6 +5,7 @@ import java.nio.charset.StandardCharsets;
 import java.util.Arrays;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
+import java.util.function.Consumer;
 
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.CloseDoorCommand;
@@ -73,13 +74,15 @@ final class FleetApi implements AutoCloseable {
     }
 
     /**
-     * Poll one device. Never fails: every outcome is a {@link PollResult}.
+     * Poll one device; {@code done} gets the result on an HTTP thread, whatever happened (one callback, no future:
+     * this is the hot path, 20,000 times a second for 10,000 robots).
      *
      * @param previousBody the bytes the device's current values came from, or {@code null}: the same bytes again
      *        give {@link PollResult.Unchanged} without parsing
      */
-    CompletableFuture<PollResult> poll(String id, DeviceKind kind, URI stateUri, byte[] previousBody) {
-        return link.client().get(stateUri).handle((answer, error) -> read(id, kind, previousBody, answer, error));
+    void poll(String id, DeviceKind kind, URI stateUri, byte[] previousBody, Consumer<PollResult> done) {
+        link.client().get(stateUri).whenComplete((answer, error) -> done.accept(read(id, kind, previousBody, answer,
+                error)));
     }
 
     private PollResult read(String id, DeviceKind kind, byte[] previous, HttpAnswer answer, Throwable error) {

@@ -248,8 +248,8 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
             pollsInFlight++;
             stats.sent();
             // lastBody is immutable: the HTTP thread only compares with it
-            api.poll(d.id, d.kind, d.stateUri, d.lastBody)
-                    .thenAccept(result -> completions.add(new Completion(d, result))); // handled at the next tick
+            api.poll(d.id, d.kind, d.stateUri, d.lastBody,
+                    result -> completions.add(new Completion(d, result))); // handled at the next tick
         } catch (RuntimeException e) {
             // Never let one device's trouble end the fleet thread's schedule of it.
             log.warn("polling " + d.id + " failed unexpectedly: " + e);

@@ -15,14 +15,16 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
 
+import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
-import org.osgi.framework.ServiceRegistration;
-import org.osgi.service.cm.Configuration;
 import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.annotation.Property;
+import org.osgi.test.common.annotation.Property.Scalar;
+import org.osgi.test.common.annotation.config.WithConfiguration;
 
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.RobotPositionChanged;
@@ -87,19 +89,25 @@ class EdgeBackPressureIntegrationTest {
         }
     }
 
+    /** The bus's configuration of this test is deleted after it (osgi-test): wait for the bus's defaults again. */
+    @AfterAll
+    static void busDefaultsAgain(@InjectBundleContext BundleContext context) {
+        awaitBusProperty(context, "queue.capacity", 65_536);
+    }
+
     @Test
+    @WithConfiguration(pid = BUS_PID, location = "?", properties = @Property(key = "queue.capacity", value = "16",
+            scalar = Scalar.Integer))
     void aBlockedBehaviourDoesNotHoldUpThePollingOf1000Robots() throws Exception {
-        Configuration busConfig = configurationAdmin.getConfiguration(BUS_PID, "?");
         BlockedBehaviour blocked = new BlockedBehaviour();
-        ServiceRegistration<?> registration = null;
         EdgeTestSupport edge = null;
         try {
-            busConfig.update(new Hashtable<>(Map.of("queue.capacity", 16)));
-            awaitBusProperty("queue.capacity", 16);
+            awaitBusProperty(context, "queue.capacity", 16);
             Hashtable<String, Object> properties = new Hashtable<>();
             properties.put(SmartBehaviourNamespace.CONSUMED_PROPERTY,
                     new String[] { RobotPositionChanged.class.getName(), CommandOutcome.class.getName() });
-            registration = context.registerService(SmartBehaviour.class.getName(), blocked, properties);
+            // unregistered by osgi-test's CloseableBundleContext after the test
+            context.registerService(SmartBehaviour.class.getName(), blocked, properties);
 
             SimConfig fleet = SimConfig.builder().map(MapGenerator.generate(200, 100, ROBOTS, 20, 1, 7))
                     .manualStep(true).build();
@@ -109,9 +117,9 @@ class EdgeBackPressureIntegrationTest {
             await("the bus refuses the edge's events").atMost(DEADLINE)
                     .until(() -> monitor.statistics().eventsWaiting > 0);
 
-            // a fresh framework: let the JIT warm up on two rounds of polls before the measured window
-            long warm = monitor.statistics().answered + 2 * WINDOW_POLLS / 3;
-            await("two rounds of polls").atMost(DEADLINE).pollInterval(Duration.ofMillis(50))
+            // a fresh framework: let the JIT warm up on five rounds of polls before the measured window
+            long warm = monitor.statistics().answered + 5 * ROBOTS * 2L;
+            await("five rounds of polls").atMost(DEADLINE).pollInterval(Duration.ofMillis(50))
                     .until(() -> monitor.statistics().answered >= warm);
             PollStatistics before = monitor.statistics();
             List<CompletableFuture<CommandOutcome>> commands = new ArrayList<>();
@@ -130,9 +138,13 @@ class EdgeBackPressureIntegrationTest {
             assertThat(after.skipped - before.skipped).as("polls skipped: a device's previous poll still open")
                     .isZero();
             assertThat(after.failed - before.failed).as("polls failed").isZero();
-            // on time: within 500 ms +- 50 ms of the previous one; 1% is left to a shared machine's scheduling
-            assertThat(onTime).as("polls on time (%d late) while the behaviour was blocked", late)
-                    .isGreaterThanOrEqualTo((long) Math.ceil(0.99 * (onTime + late)));
+            // On time: sent within 500 ms +- 50 ms of the device's previous poll. A fleet thread that waited for the
+            // bus would stop every poll (the bus's overflow timeout is 5 s); 5% is left to the scheduling of a
+            // shared machine running the simulator, the edge and the test in one JVM (the speed target itself is
+            // the polling benchmark's, BENCHMARKS.md).
+            assertThat(onTime).as("polls on time (%d late, |interval - period| p99 %.1f ms) while the behaviour "
+                    + "was blocked", late, after.deviationP99Millis)
+                    .isGreaterThanOrEqualTo((long) Math.ceil(0.95 * (onTime + late)));
             assertThat(after.eventsWaiting).as("the behaviour was still blocked: events still waiting").isPositive();
             assertThat(after.eventsRefused).isGreaterThan(before.eventsRefused);
 
@@ -145,18 +157,13 @@ class EdgeBackPressureIntegrationTest {
             });
         } finally {
             blocked.release.countDown();
-            if (registration != null) {
-                registration.unregister();
-            }
             if (edge != null) {
                 edge.close();
             }
-            busConfig.delete();
-            awaitBusProperty("queue.capacity", 65_536);
         }
     }
 
-    private void awaitBusProperty(String key, Object value) {
+    private static void awaitBusProperty(BundleContext context, String key, Object value) {
         await("the bus configured with " + key + "=" + value).atMost(DEADLINE).untilAsserted(() -> {
             ServiceReference<EventBus> ref = context.getServiceReference(EventBus.class);
             assertThat(ref).isNotNull();

@@ -38,18 +38,19 @@ class SseIntegrationTest extends EdgeRestTestBase {
     static LogReaderService logs;
     @InjectService(timeout = 10_000)
     static LoggerAdmin loggers;
+    static final String REST_BUNDLE = "eu.brain.iot.edge.rest";
 
     @BeforeAll
     static void configure() throws Exception {
         // frequent heartbeats, so that a client that left is noticed within the test's patience
         edge.configureRest(Map.of("sse.heartbeat.ms", 200L));
-        // the edge says at INFO when a client left
-        loggers.getLoggerContext("eu.brain.iot.edge").setLogLevels(Map.of(Logger.ROOT_LOGGER_NAME, LogLevel.INFO));
+        // the edge's REST bundle says at INFO when a client left (a logger context is named after its bundle)
+        loggers.getLoggerContext(REST_BUNDLE).setLogLevels(Map.of(Logger.ROOT_LOGGER_NAME, LogLevel.INFO));
     }
 
     @AfterAll
     static void resetLogLevels() {
-        loggers.getLoggerContext("eu.brain.iot.edge").setLogLevels(Map.of());
+        loggers.getLoggerContext(REST_BUNDLE).setLogLevels(Map.of());
     }
 
     /** An open stream: its lines, read on a thread of its own. */
