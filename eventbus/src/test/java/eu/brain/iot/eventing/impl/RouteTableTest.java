@@ -94,7 +94,8 @@ class RouteTableTest {
         channel(null, false, BrainIoTEvent.class.getName());
         RouteTable table = new RouteTable(channels);
         assertThat(table.routeFor("com.example.Order", this::counters).plain()).containsExactly(byName);
-        assertThat(table.routeFor("com.example.Order", this::counters).typeNames()).containsExactly("com.example.Order");
+        assertThat(table.routeFor("com.example.Order", this::counters).typeNames())
+                .containsExactly("com.example.Order");
         assertThat(table.routeFor("com.example.Other", this::counters).plain()).isEmpty();
     }
 

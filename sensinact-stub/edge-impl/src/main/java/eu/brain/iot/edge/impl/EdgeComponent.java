@@ -28,12 +28,14 @@ import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 
 /**
- * The edge as a Declarative Services component: the {@link DeviceModel} service, and a smart behaviour that
- * consumes {@link EdgeCommand}s. Configured by Config Admin (PID {@value EdgeConfig#PID}); a new configuration is applied
- * in place (devices added and removed, nothing restarted).
+ * The edge as a Declarative Services component: the {@link DeviceModel} and {@link PollMonitor} services, and a
+ * smart behaviour that consumes {@link EdgeCommand}s. Configured by Config Admin (PID {@value EdgeConfig#PID}); a
+ * new configuration is applied in place (devices added and removed, nothing restarted). It registers API types
+ * only (the edge's and the eventing API's) and depends on the framework-free core ({@link Edge}), never the other
+ * way.
  */
-@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class }, configurationPid = EdgeConfig.PID,
-        configurationPolicy = ConfigurationPolicy.OPTIONAL)
+@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class },
+        configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
 @SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
         description = "Performs robot and door commands over the fleet's REST API")
 @Designate(ocd = EdgeConfig.class)
@@ -56,7 +58,8 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
         try {
             edge.configure(FleetSettings.from(config));
         } catch (IllegalArgumentException e) {
-            log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: " + e.getMessage());
+            log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: "
+                    + e.getMessage());
         }
     }
 
