@@ -26,7 +26,9 @@ import java.util.concurrent.TimeUnit;
  * {@link #MAX_TICK_NANOS}, less for short periods), sends every poll that has come due and handles every answer
  * that came in since the last tick. So a poll goes out up to one tick after its due time and an answer is handled
  * up to one tick after it came, and a fleet of 10,000 robots costs a few hundred wake-ups a second rather than
- * tens of thousands; the HTTP threads hand answers over through a queue without waking the fleet thread.
+ * tens of thousands; the HTTP threads hand answers over through a queue without waking the fleet thread. Each
+ * tick first sends what waits in the {@link Outbox} (events the bus refused), and ticks go on while anything waits
+ * there: the bus is offered events, never waited for.
  */
 final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevice> {
 
