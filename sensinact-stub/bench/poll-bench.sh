@@ -8,15 +8,15 @@
 set -euo pipefail
 root="$(cd "$(dirname "$0")/../.." && pwd)"
 cd "$root"
-cp_file=sensinact-stub/target/bench-classpath.txt
+cp_file=sensinact-stub/edge-impl/target/bench-classpath.txt
 for a in "$@"; do
   [ "$a" = --help ] || [ "$a" = -h ] && SKIP_BUILD="${SKIP_BUILD:-$( [ -f "$cp_file" ] && echo 1 || echo 0)}"
 done
 if [ "${SKIP_BUILD:-0}" != 1 ] || [ ! -f "$cp_file" ] || [ ! -f robot-sim/target/robot-sim.jar ]; then
-  echo "building the edge, its test classes and robot-sim (mvn -B -q -pl sensinact-stub -am package -DskipTests) ..." >&2
-  mvn -B -q -pl sensinact-stub -am package -DskipTests dependency:build-classpath \
+  echo "building the edge, its test classes and robot-sim (mvn -B -q -pl sensinact-stub/edge-impl -am package -DskipTests) ..." >&2
+  mvn -B -q -pl sensinact-stub/edge-impl -am package -DskipTests dependency:build-classpath \
     -Dmdep.outputFile=target/bench-classpath.txt -Dmdep.includeScope=test
 fi
 # shellcheck disable=SC2086
-exec java ${JAVA_OPTS:-} -cp "sensinact-stub/target/test-classes:sensinact-stub/target/classes:$(cat "$cp_file")" \
+exec java ${JAVA_OPTS:-} -cp "sensinact-stub/edge-impl/target/test-classes:sensinact-stub/edge-impl/target/classes:$(cat "$cp_file")" \
   eu.brain.iot.edge.impl.PollBenchmark --sim-jar robot-sim/target/robot-sim.jar "$@"

@@ -47,9 +47,6 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  */
 final class AsyncEventBus implements EventBus {
 
-    private static final ConsumerChannel[] NONE = new ConsumerChannel[0];
-    /** How an overflow of the hold names the "consumer" whose queue was full. */
-    static final String HOLD_NAME = "the bus's hold of unhandled events";
     /** Set while this thread is inside the policy: an event it publishes there is not put to the policy again. */
     private static final ThreadLocal<Boolean> ASKING = ThreadLocal.withInitial(() -> Boolean.FALSE);
 
@@ -80,6 +77,29 @@ final class AsyncEventBus implements EventBus {
 
     @Override
     public void deliver(BrainIoTEvent event) {
+        publish(event, true);
+    }
+
+    @Override
+    public void deliver(String eventType, Map<String, Object> eventData) {
+        publish(eventType, eventData, true);
+    }
+
+    @Override
+    public boolean tryDeliver(BrainIoTEvent event) {
+        return publish(event, false);
+    }
+
+    @Override
+    public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
+        return publish(eventType, eventData, false);
+    }
+
+    /**
+     * @param wait whether to wait for room (up to the overflow timeout, then throw) or to return false at once
+     * @return whether the event was accepted (queued, held, or counted as unhandled)
+     */
+    private boolean publish(BrainIoTEvent event, boolean wait) {
         if (event == null) {
             throw new IllegalArgumentException("deliver(null): an event is required");
         }
@@ -92,16 +112,14 @@ final class AsyncEventBus implements EventBus {
         }
         RouteTable table = routes;
         Route route = table.routeFor(snapshot.getClass(), this::countersFor);
-        ConsumerChannel[] targets = targets(route, snapshot);
+        ConsumerChannel[] targets = route.targets(snapshot);
         if (targets.length > 0) {
-            send(targets, route.counters(), snapshot); // the hot path: no hold, no policy, no lock
-        } else {
-            unhandled(table, route, snapshot, snapshot.getClass());
+            return send(targets, route.counters(), snapshot, wait); // the hot path: no hold, no policy, no lock
         }
+        return unhandled(table, route, snapshot, snapshot.getClass(), wait);
     }
 
-    @Override
-    public void deliver(String eventType, Map<String, Object> eventData) {
+    private boolean publish(String eventType, Map<String, Object> eventData, boolean wait) {
         if (eventType == null || eventType.isEmpty() || eventData == null) {
             throw new IllegalArgumentException("deliver(eventType, eventData): both are required, got eventType="
                     + eventType + ", eventData=" + (eventData == null ? "null" : "a map"));
@@ -111,12 +129,11 @@ final class AsyncEventBus implements EventBus {
         snapshot.putIfAbsent("timestamp", Instant.now());
         RouteTable table = routes;
         Route route = table.routeFor(eventType, this::countersFor);
-        ConsumerChannel[] targets = targets(route, snapshot);
+        ConsumerChannel[] targets = route.targets(snapshot);
         if (targets.length > 0) {
-            send(targets, route.counters(), snapshot);
-        } else {
-            unhandled(table, route, snapshot, null);
+            return send(targets, route.counters(), snapshot, wait);
         }
+        return unhandled(table, route, snapshot, null, wait);
     }
 
     /** The route of an event in a table; {@code type} is null for an untyped event. */
@@ -124,30 +141,19 @@ final class AsyncEventBus implements EventBus {
         return type != null ? table.routeFor(type, this::countersFor) : table.routeFor(eventType, this::countersFor);
     }
 
-    /** The behaviours an event goes to: the route's unfiltered ones, and the filtered ones that match it. */
-    private static ConsumerChannel[] targets(Route route, Object snapshot) {
-        ConsumerChannel[] targets = route.plain();
-        if (route.filtered().length == 0) {
-            return targets;
-        }
-        @SuppressWarnings("unchecked")
-        Map<String, ?> fields = snapshot instanceof Map<?, ?> map ? (Map<String, ?>) map : EventMaps.toMap(snapshot);
-        List<ConsumerChannel> matching = new ArrayList<>(Arrays.asList(targets));
-        for (ConsumerChannel c : route.filtered()) {
-            if (c.spec.filter().matches(fields)) {
-                matching.add(c);
-            }
-        }
-        return matching.toArray(NONE);
-    }
-
     private ConsumerChannel[] targetsIn(RouteTable table, Held held) {
-        return targets(routeOf(table, held.type(), held.counters().eventType), held.snapshot());
+        return routeOf(table, held.type(), held.counters().eventType).targets(held.snapshot());
     }
 
-    /** Queue an event for its targets, all or none, waiting for room up to the overflow timeout. */
-    private void send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot) {
-        reserveAll(targets, typeCounters.eventType);
+    /**
+     * Queue an event for its targets, all or none, waiting for room up to the overflow timeout if {@code wait}.
+     *
+     * @return false when a queue was full and {@code wait} is false (nothing queued then)
+     */
+    private boolean send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot, boolean wait) {
+        if (!reserveAll(targets, typeCounters.eventType, wait)) {
+            return false;
+        }
         typeCounters.published.increment();
         Envelope envelope = new Envelope(snapshot, typeCounters, targets.length == 1);
         boolean madeReady = false;
@@ -157,6 +163,7 @@ final class AsyncEventBus implements EventBus {
         if (madeReady) {
             pool.signal(); // once per event, not once per behaviour: workers pass the wake-up on
         }
+        return true;
     }
 
     /**
@@ -165,14 +172,13 @@ final class AsyncEventBus implements EventBus {
      * it changed since, the event is routed again (with the same answer of the policy), so that it can neither
      * be appended to the hold after a hand-over nor overtake held events.
      */
-    private void unhandled(RouteTable table, Route route, Object snapshot, Class<?> type) {
+    private boolean unhandled(RouteTable table, Route route, Object snapshot, Class<?> type, boolean wait) {
         Disposition decided = null;
         long deadline = 0;
         while (true) {
             UnhandledEventPolicy current = policy;
             if (current == null) {
-                lastResortOrUnhandled(table, route.counters(), snapshot);
-                return;
+                return lastResortOrUnhandled(table, route.counters(), snapshot, wait);
             }
             if (decided == null) {
                 decided = ask(current, route);
@@ -180,36 +186,40 @@ final class AsyncEventBus implements EventBus {
             if (decided == Disposition.UNHANDLED) {
                 countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()
                         + " gives them up");
-                return;
+                return true;
             }
             if (decided != Disposition.HOLD) {
-                lastResortOrUnhandled(table, route.counters(), snapshot);
-                return;
+                return lastResortOrUnhandled(table, route.counters(), snapshot, wait);
             }
             if (deadline == 0) {
                 deadline = System.nanoTime() + overflowTimeoutNanos;
             }
             Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis());
-            HoldOutcome outcome = hold(table, current, held, deadline);
+            HoldOutcome outcome = hold(table, current, held, wait ? deadline : 0);
             if (outcome == HoldOutcome.HELD) {
-                return;
+                return true;
+            }
+            if (outcome == HoldOutcome.FULL) {
+                return false;
             }
             if (outcome == HoldOutcome.POLICY_CHANGED) {
                 decided = null; // another policy, or none, decides now
             }
             table = routes;
             route = routeOf(table, type, route.counters().eventType);
-            ConsumerChannel[] targets = targets(route, snapshot);
+            ConsumerChannel[] targets = route.targets(snapshot);
             if (targets.length > 0) {
-                send(targets, route.counters(), snapshot);
-                return;
+                return send(targets, route.counters(), snapshot, wait);
             }
         }
     }
 
-    private enum HoldOutcome { HELD, TABLE_CHANGED, POLICY_CHANGED }
+    private enum HoldOutcome { HELD, FULL, TABLE_CHANGED, POLICY_CHANGED }
 
-    /** Append to the hold if {@code table} and {@code current} are still current, waiting for room if full. */
+    /**
+     * Append to the hold if {@code table} and {@code current} are still current, waiting for room if full;
+     * {@code deadline} 0: no waiting, {@link HoldOutcome#FULL} at once.
+     */
     private HoldOutcome hold(RouteTable table, UnhandledEventPolicy current, Held held, long deadline) {
         int max = Math.max(1, current.maxHeldEvents()); // asked outside the lock, as every call of the policy
         synchronized (consumersLock) {
@@ -225,31 +235,23 @@ final class AsyncEventBus implements EventBus {
                     held.counters().published.increment();
                     return HoldOutcome.HELD;
                 }
+                if (deadline == 0) {
+                    return HoldOutcome.FULL;
+                }
                 long left = deadline - System.nanoTime();
                 if (left <= 0) {
-                    throw holdFull(held.counters().eventType, max, current);
+                    throw Overflows.holdFull(held.counters().eventType, max, current.getClass().getName(),
+                            TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos));
                 }
                 try {
                     // woken (notifyAll) whenever the hold shrinks or the table or the policy changes
                     TimeUnit.NANOSECONDS.timedWait(consumersLock, left);
                 } catch (InterruptedException e) {
                     Thread.currentThread().interrupt();
-                    throw new EventBusOverflowException(held.counters().eventType, HOLD_NAME, "Event of type "
-                            + held.counters().eventType + " not delivered: the publishing thread was interrupted "
-                            + "while it waited for room in the bus's hold of unhandled events.");
+                    throw Overflows.interrupted(held.counters().eventType);
                 }
             }
         }
-    }
-
-    private EventBusOverflowException holdFull(String eventType, int max, UnhandledEventPolicy current) {
-        return new EventBusOverflowException(eventType, HOLD_NAME, "Event of type " + eventType
-                + " not delivered: the bus already holds " + max + " events (the maximum of the unhandled-event "
-                + "policy " + current.getClass().getName() + ") waiting for behaviours to be installed, and none "
-                + "left the hold for " + TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos) + " ms. Publish more "
-                + "slowly, raise the policy's maximum of held events (max.held.events of the Behaviour Management "
-                + "Service), or find out why no behaviour that consumes the held types gets installed (Gogo: "
-                + "bus:stats, bms:pending).");
     }
 
     /** Ask the policy, once per event; an event published from inside the policy is not put to it again. */
@@ -274,12 +276,13 @@ final class AsyncEventBus implements EventBus {
     }
 
     /** The bus's own rules for an event no behaviour takes: consumers of last resort, else counted unhandled. */
-    private void lastResortOrUnhandled(RouteTable table, EventTypeCounters typeCounters, Object snapshot) {
+    private boolean lastResortOrUnhandled(RouteTable table, EventTypeCounters typeCounters, Object snapshot,
+            boolean wait) {
         if (table.lastResort.length > 0) {
-            send(table.lastResort, typeCounters, snapshot);
-        } else {
-            countUnhandled(typeCounters, "no consumer of last resort is installed");
+            return send(table.lastResort, typeCounters, snapshot, wait);
         }
+        countUnhandled(typeCounters, "no consumer of last resort is installed");
+        return true;
     }
 
     private void countUnhandled(EventTypeCounters typeCounters, String why) {
@@ -295,8 +298,12 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
-    /** Reserve a queue slot in every target, or none: waits for room up to the overflow timeout. */
-    private void reserveAll(ConsumerChannel[] targets, String eventType) {
+    /**
+     * Reserve a queue slot in every target, or none: waits for room up to the overflow timeout if {@code wait}.
+     *
+     * @return false when a queue was full and {@code wait} is false (nothing reserved then)
+     */
+    private boolean reserveAll(ConsumerChannel[] targets, String eventType, boolean wait) {
         long deadline = 0;
         for (int i = 0; i < targets.length; i++) {
             ConsumerChannel target = targets[i];
@@ -308,21 +315,20 @@ final class AsyncEventBus implements EventBus {
                 if (deadline == 0) {
                     deadline = now + overflowTimeoutNanos;
                 }
-                if (now - deadline >= 0) {
+                if (!wait || now - deadline >= 0) {
                     for (int j = 0; j < i; j++) {
                         targets[j].release();
                     }
-                    throw new EventBusOverflowException(eventType, target.spec.name(),
-                            "Event of type " + eventType + " not delivered: the queue of smart behaviour "
-                                    + target.spec.name() + " (bundle " + target.spec.bundle() + ") stayed full ("
-                                    + queueCapacity + " events) for "
-                                    + TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos)
-                                    + " ms. That behaviour is too slow or blocked; publish more slowly, fix it, "
-                                    + "or raise queue.capacity in configuration PID " + EventBusComponent.PID + ".");
+                    if (!wait) {
+                        return false;
+                    }
+                    throw Overflows.queueFull(eventType, target.spec, queueCapacity,
+                            TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos));
                 }
                 LockSupport.parkNanos(50_000);
             }
         }
+        return true;
     }
 
     private EventTypeCounters countersFor(String eventType) {

@@ -3,9 +3,12 @@ package eu.brain.iot.eventing.impl;
 import org.osgi.service.metatype.annotations.AttributeDefinition;
 import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
-/** Configuration of the event bus (PID {@value EventBusComponent#PID}); every value has a safe default. */
+/** Configuration of the event bus (PID {@value #PID}); every value has a safe default. */
 @ObjectClassDefinition(name = "BRAIN-IoT event bus", description = "Bounds of the asynchronous event bus")
 @interface BusConfig {
+
+    /** The configuration PID; the bus's core names it in its errors, the component is configured by it. */
+    String PID = "eu.brain.iot.eventing";
 
     @AttributeDefinition(description = "Events that may wait in one behaviour's queue; bounds the bus's memory")
     int queue_capacity() default 65_536;

@@ -48,11 +48,10 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
  * applied in place ({@link #modified}): the bus, its queues and its hold stay, so no queued event is lost to it.
  */
 @Component(service = { EventBus.class, EventBusStatistics.class, HeldEvents.class },
-        configurationPid = EventBusComponent.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
+        configurationPid = BusConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
 @Designate(ocd = BusConfig.class)
 public final class EventBusComponent implements EventBus, EventBusStatistics, HeldEvents {
 
-    static final String PID = "eu.brain.iot.eventing";
     /** How long a delivery worker beyond {@code delivery.workers} (added for a stalled behaviour) stays idle. */
     static final long WORKER_KEEP_ALIVE_NANOS = TimeUnit.SECONDS.toNanos(1);
 
@@ -84,7 +83,7 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
                     deliverySettings(config, Runtime.getRuntime().availableProcessors()));
         } catch (IllegalArgumentException e) {
             log.error("The event bus configuration (PID {}) was not applied: {}. The previous settings stay; fix "
-                    + "the configuration.", PID, e.getMessage());
+                    + "the configuration.", BusConfig.PID, e.getMessage());
         }
     }
 
@@ -226,6 +225,16 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
     @Override
     public void deliver(String eventType, Map<String, Object> eventData) {
         bus.deliver(eventType, eventData);
+    }
+
+    @Override
+    public boolean tryDeliver(BrainIoTEvent event) {
+        return bus.tryDeliver(event);
+    }
+
+    @Override
+    public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
+        return bus.tryDeliver(eventType, eventData);
     }
 
     @Override

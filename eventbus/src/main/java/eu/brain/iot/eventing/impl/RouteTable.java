@@ -2,9 +2,11 @@ package eu.brain.iot.eventing.impl;
 
 import java.lang.ref.WeakReference;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.LinkedHashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.function.Function;
@@ -85,5 +87,26 @@ final class RouteTable {
      */
     record Route(WeakReference<Class<?>> type, EventTypeCounters counters, ConsumerChannel[] plain,
             ConsumerChannel[] filtered, List<String> typeNames) {
+
+        /**
+         * The behaviours one event goes to: the unfiltered ones, and the filtered ones that match its fields.
+         *
+         * @param snapshot the bus's snapshot: an event object, or a map for an untyped event
+         */
+        ConsumerChannel[] targets(Object snapshot) {
+            if (filtered.length == 0) {
+                return plain;
+            }
+            @SuppressWarnings("unchecked")
+            Map<String, ?> fields = snapshot instanceof Map<?, ?> map ? (Map<String, ?>) map
+                    : EventMaps.toMap(snapshot);
+            List<ConsumerChannel> matching = new ArrayList<>(Arrays.asList(plain));
+            for (ConsumerChannel c : filtered) {
+                if (c.spec.filter().matches(fields)) {
+                    matching.add(c);
+                }
+            }
+            return matching.toArray(ConsumerChannel[]::new);
+        }
     }
 }

@@ -1,0 +1,121 @@
+package eu.brain.iot.eventing.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+
+/** Events as maps of their fields and back, and from one class of an event to another with the same fields. */
+class EventMapsTest {
+
+    public static class Point {
+        public int x;
+        public int y;
+    }
+
+    public static class Route extends BrainIoTEvent {
+        public String robotId;
+        public Point start;
+        public Point[] stops;
+        public List<Point> detours;
+        public Map<String, Integer> counts;
+        public int[] codes;
+    }
+
+    /** Another bundle's copy of {@link Route}: same field names, other classes. */
+    public static class OtherRoute extends BrainIoTEvent {
+        public String robotId;
+        public OtherPoint start;
+        public List<OtherPoint> stops;
+        public long[] codes;
+    }
+
+    public static class OtherPoint {
+        public long x;
+        public long y;
+    }
+
+    static Point point(int x, int y) {
+        Point p = new Point();
+        p.x = x;
+        p.y = y;
+        return p;
+    }
+
+    static Route route() {
+        Route r = new Route();
+        r.robotId = "robot1";
+        r.timestamp = Instant.parse("2026-11-23T00:00:00Z");
+        r.start = point(1, 2);
+        r.stops = new Point[] { point(3, 4), point(5, 6) };
+        r.detours = new ArrayList<>(List.of(point(7, 8)));
+        r.counts = new LinkedHashMap<>(Map.of("moves", 3));
+        r.codes = new int[] { 9, 10 };
+        return r;
+    }
+
+    @Test
+    void anEventBecomesAMapOfItsFieldsWithNestedObjectsAsMapsAndArraysAsLists() {
+        Map<String, Object> map = EventMaps.toMap(route());
+        assertThat(map).containsEntry("robotId", "robot1").containsEntry("timestamp",
+                Instant.parse("2026-11-23T00:00:00Z")).containsEntry("sourceNode", null);
+        assertThat(map.get("start")).isEqualTo(Map.of("x", 1, "y", 2));
+        assertThat(map.get("stops")).isEqualTo(List.of(Map.of("x", 3, "y", 4), Map.of("x", 5, "y", 6)));
+        assertThat(map.get("detours")).isEqualTo(List.of(Map.of("x", 7, "y", 8)));
+        assertThat(map.get("counts")).isEqualTo(Map.of("moves", 3));
+        assertThat(map.get("codes")).isEqualTo(List.of(9, 10));
+    }
+
+    @Test
+    void aMapBecomesAnEventWithEveryFieldConvertedToItsDeclaredType() {
+        Map<String, Object> fields = new LinkedHashMap<>();
+        fields.put("robotId", "robot2");
+        fields.put("start", Map.of("x", 1L, "y", "2"));
+        fields.put("stops", List.of(Map.of("x", 3, "y", 4)));
+        fields.put("codes", List.of(5L, 6L));
+        Route r = EventMaps.fromMap(fields, Route.class);
+        assertThat(r.robotId).isEqualTo("robot2");
+        assertThat(r.start.x).isEqualTo(1);
+        assertThat(r.start.y).isEqualTo(2);
+        assertThat(r.stops).hasSize(1);
+        assertThat(r.stops[0].y).isEqualTo(4);
+        assertThat(r.codes).containsExactly(5, 6);
+        assertThat(r.detours).isNull();
+    }
+
+    @Test
+    void anEventIsConvertedToAnotherClassWithTheSameFieldNames() {
+        OtherRoute other = EventMaps.convert(route(), OtherRoute.class);
+        assertThat(other.robotId).isEqualTo("robot1");
+        assertThat(other.timestamp).isEqualTo(Instant.parse("2026-11-23T00:00:00Z"));
+        assertThat(other.start.x).isEqualTo(1L);
+        assertThat(other.stops).extracting(p -> p.y).containsExactly(4L, 6L);
+        assertThat(other.codes).containsExactly(9L, 10L);
+    }
+
+    @Test
+    void aCopiedMapSharesNothingMutableWithTheOriginal() {
+        List<Object> stops = new ArrayList<>(List.of(new LinkedHashMap<>(Map.of("x", 1))));
+        Map<String, Object> original = new LinkedHashMap<>();
+        original.put("stops", stops);
+        original.put("start", point(2, 3));
+        original.put("codes", new int[] { 4 });
+        Map<String, Object> copy = EventMaps.copyMap(original);
+
+        stops.add("added later");
+        @SuppressWarnings("unchecked")
+        Map<String, Object> firstStop = (Map<String, Object>) stops.get(0);
+        firstStop.put("x", 99);
+        assertThat(copy.get("stops")).isEqualTo(List.of(Map.of("x", 1)));
+        assertThat(copy.get("start")).as("a data object becomes a map, as toMap makes it")
+                .isEqualTo(Map.of("x", 2, "y", 3));
+        assertThat(copy.get("codes")).isEqualTo(List.of(4));
+    }
+}

@@ -1,0 +1,115 @@
+package eu.brain.iot.edge.impl;
+
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CompletionStage;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Modified;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.metatype.annotations.Designate;
+
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.EdgeCommand;
+import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollMonitor;
+import eu.brain.iot.edge.model.api.PollStatistics;
+import eu.brain.iot.edge.model.api.ProviderSnapshot;
+import eu.brain.iot.edge.model.api.ResourceListener;
+import eu.brain.iot.edge.model.api.ResourceValue;
+import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+
+/**
+ * The edge as a Declarative Services component: the {@link DeviceModel} and {@link PollMonitor} services, and a
+ * smart behaviour that consumes {@link EdgeCommand}s. Configured by Config Admin (PID {@value EdgeConfig#PID}); a
+ * new configuration is applied in place (devices added and removed, nothing restarted). It registers API types
+ * only (the edge's and the eventing API's) and depends on the framework-free core ({@link Edge}), never the other
+ * way.
+ */
+@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class },
+        configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
+@SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
+        description = "Performs robot and door commands over the fleet's REST API")
+@Designate(ocd = EdgeConfig.class)
+public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, PollMonitor {
+
+    private final Edge edge;
+    private final Logger log;
+
+    @Activate
+    public EdgeComponent(EdgeConfig config, @Reference EventBus bus,
+            @Reference(service = LoggerFactory.class) Logger log) {
+        this.log = log;
+        FleetSettings settings = checked(config);
+        this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
+        log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
+    }
+
+    @Modified
+    void modified(EdgeConfig config) {
+        try {
+            edge.configure(FleetSettings.from(config));
+        } catch (IllegalArgumentException e) {
+            log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: "
+                    + e.getMessage());
+        }
+    }
+
+    private FleetSettings checked(EdgeConfig config) {
+        try {
+            return FleetSettings.from(config);
+        } catch (IllegalArgumentException e) {
+            log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
+            throw e;
+        }
+    }
+
+    @Deactivate
+    void deactivate() {
+        edge.close();
+    }
+
+    @Override
+    public void notify(EdgeCommand command) {
+        edge.execute(command);
+    }
+
+    @Override
+    public List<ProviderSnapshot> providers() {
+        return edge.providers();
+    }
+
+    @Override
+    public Optional<ProviderSnapshot> provider(String providerId) {
+        return edge.provider(providerId);
+    }
+
+    @Override
+    public Optional<ResourceValue> resource(String providerId, String service, String resource) {
+        return edge.resource(providerId, service, resource);
+    }
+
+    @Override
+    public Subscription subscribe(String providerId, String service, ResourceListener listener) {
+        return edge.subscribe(providerId, service, listener);
+    }
+
+    @Override
+    public CompletionStage<CommandOutcome> act(String providerId, String service, String action,
+            Map<String, Object> parameters) {
+        return edge.act(providerId, service, action, parameters);
+    }
+
+    @Override
+    public PollStatistics statistics() {
+        return edge.statistics();
+    }
+}

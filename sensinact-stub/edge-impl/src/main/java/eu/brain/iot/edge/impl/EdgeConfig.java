@@ -1,0 +1,40 @@
+package eu.brain.iot.edge.impl;
+
+import org.osgi.service.metatype.annotations.AttributeDefinition;
+import org.osgi.service.metatype.annotations.ObjectClassDefinition;
+
+/** Configuration of the edge (PID {@value #PID}); every value has a default that suits robot-sim. */
+@ObjectClassDefinition(name = "BRAIN-IoT edge (sensiNact-style gateway)",
+        description = "Where the robot fleet answers, what to poll and how often")
+@interface EdgeConfig {
+
+    /** The configuration PID; the edge's core names it in its messages, the component is configured by it. */
+    String PID = "eu.brain.iot.edge";
+
+    @AttributeDefinition(description = "Base URL of the fleet's REST API (robot-sim: one port for every robot and door)")
+    String fleet_url() default "http://127.0.0.1:8090/";
+
+    @AttributeDefinition(description = "Robot ids to poll. Empty, with doors empty too: ask the fleet (GET /)")
+    String[] robots() default {};
+
+    @AttributeDefinition(description = "Door ids to poll. Empty, with robots empty too: ask the fleet (GET /)")
+    String[] doors() default {};
+
+    @AttributeDefinition(description = "Time between two polls of one device (milliseconds)")
+    long poll_period_ms() default 500;
+
+    @AttributeDefinition(description = "How long to wait for a device's answer (milliseconds)")
+    long request_timeout_ms() default 1_000;
+
+    @AttributeDefinition(description = "Keep-alive connections per fleet host: bounds requests in flight")
+    int max_connections() default 64;
+
+    @AttributeDefinition(description = "HTTP client I/O threads (the client is asynchronous: no thread per robot)")
+    int io_threads() default 1;
+
+    @AttributeDefinition(description = "Failed polls in a row after which a device is reported unreachable")
+    int unreachable_after_failures() default 3;
+
+    @AttributeDefinition(description = "Longest time between two polls of an unreachable device (milliseconds)")
+    long backoff_max_ms() default 8_000;
+}

@@ -1,0 +1,375 @@
+package eu.brain.iot.edge.impl;
+
+import java.time.Instant;
+import java.util.ArrayList;
+import java.util.HashMap;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.PriorityQueue;
+import java.util.Queue;
+import java.util.concurrent.ConcurrentLinkedQueue;
+import java.util.concurrent.ScheduledFuture;
+import java.util.concurrent.TimeUnit;
+
+/**
+ * Schedules the polls of every device of the fleet, once per period, and hands each poll's result to the
+ * {@link DeviceStore}, where the change happens (and from which the SSE updates and the bus events leave).
+ * <p>
+ * Threads: one <em>fleet thread</em> owns all of this class's state and the {@link PolledDevice}s, so none of it
+ * needs a lock. The {@link FleetApi}'s HTTP threads only send, receive and parse, then hand a typed
+ * {@link PollResult} to the fleet thread. Polls are scheduled at a fixed rate, spread
+ * over the period, and never wait for each other's answers: a slow device delays nobody (its next poll is
+ * skipped while one is still in flight). A device that keeps failing is reported once, then polled with backoff.
+ * <p>
+ * Ticks: the fleet thread does not wake for every poll. It wakes once per tick (at most every
+ * {@link #MAX_TICK_NANOS}, less for short periods), sends every poll that has come due and handles every answer
+ * that came in since the last tick. So a poll goes out up to one tick after its due time and an answer is handled
+ * up to one tick after it came, and a fleet of 10,000 robots costs a few hundred wake-ups a second rather than
+ * tens of thousands; the HTTP threads hand answers over through a queue without waking the fleet thread. Each
+ * tick first sends what waits in the {@link Outbox} (events the bus refused), and ticks go on while anything waits
+ * there: the bus is offered events, never waited for.
+ */
+final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevice> {
+
+    /** The longest time between two ticks while polls are due or answers are awaited. */
+    static final long MAX_TICK_NANOS = TimeUnit.MILLISECONDS.toNanos(5);
+
+    /** A poll due at {@code at}; stale when its device was removed or rescheduled since ({@code round} differs). */
+    private record Due(long at, PolledDevice device, int round) implements Comparable<Due> {
+        @Override
+        public int compareTo(Due o) {
+            return Long.compare(at, o.at);
+        }
+    }
+
+    /** A poll's outcome, handed from an HTTP thread to the fleet thread. */
+    private record Completion(PolledDevice device, PollResult result) {
+    }
+
+    private final FleetThread fleet;
+    private final FleetApi api;
+    private final DeviceStore store;
+    private final Outbox outbox;
+    private final EdgeLog log;
+    private final PollStats stats = new PollStats();
+
+    // fleet thread only
+    private FleetSettings settings;
+    private final Map<String, PolledDevice> devices = new HashMap<>();
+    private ScheduledFuture<?> discovery;
+    private int discoveryFailures;
+    /** Polls to send, earliest first. */
+    private final PriorityQueue<Due> due = new PriorityQueue<>();
+    /** Polls sent and not handled yet: while there are some, ticks go on to handle their answers. */
+    private int pollsInFlight;
+    private ScheduledFuture<?> tick;
+    private long tickAtNanos;
+    private boolean ticking;
+    private int notSentSinceWarning;
+    private long notSentWarnedMillis;
+    /** Answers of polls, from the HTTP threads, handled at the next tick. */
+    private final Queue<Completion> completions = new ConcurrentLinkedQueue<>();
+
+    FleetPoller(FleetThread fleet, FleetApi api, DeviceStore store, Outbox outbox, EdgeLog log) {
+        this.fleet = fleet;
+        this.api = api;
+        this.store = store;
+        this.outbox = outbox;
+        this.log = log;
+    }
+
+    /** Applies a configuration (the first one, or a new one): devices are added and removed, nothing restarts. */
+    void configure(FleetSettings next) {
+        fleet.execute(() -> apply(next));
+    }
+
+    PollStats stats() {
+        return stats;
+    }
+
+    private void apply(FleetSettings next) {
+        FleetSettings previous = settings;
+        api.configure(next);
+        settings = next;
+        if (previous != null && !previous.baseUrl().equals(next.baseUrl())) {
+            setDevices(Map.of()); // every device answers elsewhere now
+        }
+        cancelDiscovery();
+        if (next.discover()) {
+            discover();
+        } else {
+            Map<String, DeviceKind> wanted = new LinkedHashMap<>();
+            next.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
+            next.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
+            setDevices(wanted);
+        }
+    }
+
+    private void discover() {
+        FleetSettings asked = settings;
+        api.inventory().whenComplete((inventory, error) -> fleet.execute(() -> {
+            if (asked != settings) {
+                return; // configured again meanwhile
+            }
+            if (error == null) {
+                discovered(asked, inventory);
+            } else {
+                notDiscovered(asked, error.getCause() != null ? error.getCause().getMessage() : error.getMessage());
+            }
+        }));
+    }
+
+    private void discovered(FleetSettings asked, AnswerParser.Inventory inventory) {
+        discoveryFailures = 0;
+        Map<String, DeviceKind> wanted = new LinkedHashMap<>();
+        inventory.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
+        inventory.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
+        log.info("fleet at " + asked.baseUrl() + ": " + inventory.robots().size() + " robots, "
+                + inventory.doors().size() + " doors");
+        setDevices(wanted);
+    }
+
+    private void notDiscovered(FleetSettings asked, String problem) {
+        discoveryFailures++;
+        long delay = backoff(asked, discoveryFailures);
+        if (discoveryFailures == 1) {
+            log.warn("cannot list the fleet at " + asked.baseUrl() + " (" + problem + "); is robot-sim running? "
+                    + "Retrying every " + delay + " ms or more, up to backoff.max.ms; or set robots and doors in "
+                    + "the configuration " + EdgeConfig.PID);
+        }
+        discovery = fleet.schedule(this::discover, delay, TimeUnit.MILLISECONDS);
+    }
+
+    private void cancelDiscovery() {
+        if (discovery != null) {
+            discovery.cancel(false);
+            discovery = null;
+        }
+        discoveryFailures = 0;
+    }
+
+    private void setDevices(Map<String, DeviceKind> wanted) {
+        for (PolledDevice d : new ArrayList<>(devices.values())) {
+            if (wanted.get(d.id) != d.kind) {
+                devices.remove(d.id);
+                d.removed = true; // its entry in the due queue is dropped when it comes up
+                store.remove(d.id);
+            }
+        }
+        List<PolledDevice> added = new ArrayList<>();
+        wanted.forEach((id, kind) -> {
+            if (!devices.containsKey(id)) {
+                PolledDevice d = new PolledDevice(id, kind, api.stateUri(id, kind));
+                devices.put(id, d);
+                store.add(id, kind);
+                added.add(d);
+            }
+        });
+        // Spread the first polls over one period, so that a large fleet is not polled in bursts.
+        long period = TimeUnit.MILLISECONDS.toNanos(settings.periodMillis());
+        long now = System.nanoTime();
+        for (int i = 0; i < added.size(); i++) {
+            schedule(added.get(i), now + period * i / added.size());
+        }
+    }
+
+    /** Puts a device's next poll at {@code atNanos}, replacing the one it had. */
+    private void schedule(PolledDevice d, long atNanos) {
+        d.dueNanos = atNanos;
+        d.round++;
+        due.add(new Due(atNanos, d, d.round));
+        if (!ticking && (tick == null || atNanos < tickAtNanos)) {
+            armTick(atNanos, System.nanoTime());
+        }
+    }
+
+    private void armTick(long atNanos, long now) {
+        if (tick != null) {
+            tick.cancel(false);
+        }
+        tickAtNanos = Math.max(atNanos, now);
+        tick = fleet.schedule(this::tick, tickAtNanos - now, TimeUnit.NANOSECONDS);
+    }
+
+    private long tickNanos() {
+        return Math.max(TimeUnit.MICROSECONDS.toNanos(100),
+                Math.min(MAX_TICK_NANOS, TimeUnit.MILLISECONDS.toNanos(settings.periodMillis()) / 20));
+    }
+
+    /** On the fleet thread: handles the answers that came, sends the polls that are due, arms the next tick. */
+    private void tick() {
+        tick = null;
+        ticking = true;
+        try {
+            outbox.flush();
+            for (Completion c; (c = completions.poll()) != null; ) {
+                pollsInFlight--;
+                completed(c.device(), c.result());
+            }
+            long now = System.nanoTime();
+            for (Due head; (head = due.peek()) != null && head.at() <= now; ) {
+                due.poll();
+                PolledDevice d = head.device();
+                if (!d.removed && head.round() == d.round) {
+                    poll(d, now);
+                }
+            }
+        } finally {
+            ticking = false;
+            long now = System.nanoTime();
+            long next = Long.MAX_VALUE;
+            Due head = due.peek();
+            if (head != null) {
+                next = head.at();
+            }
+            if (pollsInFlight > 0 || !completions.isEmpty() || !outbox.isEmpty()) {
+                next = Math.min(next, now);
+            }
+            if (next != Long.MAX_VALUE) {
+                armTick(Math.max(next, now + tickNanos()), now); // at most one tick per tick time: batches
+            }
+        }
+    }
+
+    private void poll(PolledDevice d, long now) {
+        try {
+            FleetSettings s = settings;
+            long delay = d.unreachable ? TimeUnit.MILLISECONDS.toNanos(backoff(s, d.failures - s.unreachableAfter() + 1))
+                    : TimeUnit.MILLISECONDS.toNanos(s.periodMillis());
+            long next = d.dueNanos + delay;
+            if (next <= now) {
+                next = now + delay; // fell behind (the fleet thread was held up): start a fresh cadence
+            }
+            schedule(d, next);
+            if (d.inFlight) {
+                stats.skipped();
+                return;
+            }
+            d.inFlight = true;
+            pollsInFlight++;
+            stats.sent();
+            // lastBody is immutable: the HTTP thread only compares with it
+            api.poll(d.id, d.kind, d.stateUri, d.lastBody,
+                    result -> completions.add(new Completion(d, result))); // handled at the next tick
+        } catch (RuntimeException e) {
+            // Never let one device's trouble end the fleet thread's schedule of it.
+            log.warn("polling " + d.id + " failed unexpectedly: " + e);
+        }
+    }
+
+    private void completed(PolledDevice d, PollResult result) {
+        d.inFlight = false;
+        if (d.removed) {
+            return;
+        }
+        try {
+            result.handle(d, this);
+        } catch (RuntimeException e) {
+            log.warn("handling the answer of " + d.id + " failed unexpectedly: " + e);
+        }
+    }
+
+    /**
+     * The poll never left the edge: every connection stayed busy until the timeout (the edge is overloaded, or
+     * the fleet answers too slowly for max.connections). The values are stale, but the device is not counted as
+     * failing, so an overloaded edge (say, while a large fleet is first polled on a cold JVM) does not report
+     * healthy devices unreachable. One warning a minute for the whole fleet.
+     */
+    @Override
+    public void notSent(PolledDevice d, PollResult.NotSent notSent) {
+        String reason = notSent.reason();
+        stats.failed();
+        d.lastAnsweredSentNanos = -1;
+        if (!d.unreachable) {
+            store.stale(d.id, reason);
+        }
+        notSentSinceWarning++;
+        long now = System.currentTimeMillis();
+        if (now - notSentWarnedMillis >= 60_000) {
+            log.warn(notSentSinceWarning + " poll(s) could not be sent (" + reason + "); the edge is overloaded or "
+                    + "the fleet slow: the devices are not counted as failing. More max.connections or io.threads may "
+                    + "help");
+            notSentWarnedMillis = now;
+            notSentSinceWarning = 0;
+        }
+    }
+
+    @Override
+    public void failed(PolledDevice d, PollResult.Failed failure) {
+        String reason = failure.reason();
+        stats.failed();
+        d.failures++;
+        d.lastAnsweredSentNanos = -1;
+        FleetSettings s = settings;
+        if (d.unreachable) {
+            store.unreachable(d.id, reason, d.failures);
+            return;
+        }
+        if (d.failures < s.unreachableAfter()) {
+            store.stale(d.id, reason);
+            warnRateLimited(d, d.kind.label + " " + d.id + ": poll failed: " + reason);
+            return;
+        }
+        d.unreachable = true;
+        d.unreachableSinceMillis = System.currentTimeMillis();
+        // the store tells the status and the event (DeviceUnreachable) first, the log line comes after both:
+        // whoever sees UNREACHABLE in the model finds the event (almost) at once, not after a write to a slow log
+        store.unreachable(d.id, reason, d.failures);
+        log.warn(d.kind.label + " " + d.id + " is unreachable after " + d.failures + " failed polls (last: "
+                + reason + "); polling it with backoff up to " + s.backoffMaxMillis() + " ms until it answers");
+    }
+
+    /** At most one warning a minute per device, saying how many were held back, so a bad device cannot flood. */
+    private void warnRateLimited(PolledDevice d, String message) {
+        long now = System.currentTimeMillis();
+        if (now - d.lastWarnMillis < 60_000) {
+            d.warningsSuppressed++;
+            return;
+        }
+        String held = d.warningsSuppressed == 0 ? "" : " (" + d.warningsSuppressed + " similar in the last minute)";
+        d.lastWarnMillis = now;
+        d.warningsSuppressed = 0;
+        log.warn(message + held);
+    }
+
+    @Override
+    public void answered(PolledDevice d, PollResult.Answered answer) {
+        Instant now = answeredAt(d, answer.sentNanos());
+        d.lastBody = answer.body();
+        store.update(d.id, answer.answer(), now);
+    }
+
+    @Override
+    public void unchanged(PolledDevice d, PollResult.Unchanged unchanged) {
+        // the same answer again: the same values, so nothing to set and no event
+        store.unchanged(d.id, answeredAt(d, unchanged.sentNanos()));
+    }
+
+    /** Counts an answered poll and brings a device that was unreachable back to the normal cadence. */
+    private Instant answeredAt(PolledDevice d, long sentNanos) {
+        FleetSettings s = settings;
+        long interval = d.lastAnsweredSentNanos < 0 || d.unreachable ? -1 : sentNanos - d.lastAnsweredSentNanos;
+        stats.answered(interval, TimeUnit.MILLISECONDS.toNanos(s.periodMillis()));
+        d.lastAnsweredSentNanos = sentNanos;
+        if (d.unreachable) {
+            long down = System.currentTimeMillis() - d.unreachableSinceMillis;
+            log.info(d.kind.label + " " + d.id + " answers again after " + down + " ms");
+            // back to the normal cadence now, rather than after the backoff delay already scheduled
+            schedule(d, System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(s.periodMillis()));
+        }
+        d.unreachable = false;
+        d.failures = 0;
+        return Instant.now();
+    }
+
+    private static long backoff(FleetSettings s, int attempt) {
+        long delay = s.periodMillis() << Math.min(Math.max(attempt, 1), 16);
+        return Math.min(delay, s.backoffMaxMillis());
+    }
+
+    @Override
+    public void close() {
+        fleet.shutdown();
+    }
+}

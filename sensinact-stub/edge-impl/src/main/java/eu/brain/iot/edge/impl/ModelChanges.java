@@ -1,0 +1,27 @@
+package eu.brain.iot.edge.impl;
+
+import java.time.Instant;
+
+/**
+ * What the {@link DeviceStore} tells about each change of a provider, after it made it and after the resource
+ * listeners (SSE) heard of each changed resource: the edge's events are derived from these ({@link EdgeEvents}).
+ * Called on the fleet thread, in the order of the changes.
+ */
+interface ModelChanges {
+
+    /**
+     * A poll brought new values.
+     *
+     * @param before the answer the values came from until now, {@code null} the first time
+     */
+    void answered(String providerId, DeviceAnswer before, DeviceAnswer now, Instant at);
+
+    /** The device stopped answering: its resources are {@code UNREACHABLE} now. */
+    void unreachable(String providerId, DeviceKind kind, String reason, int failures);
+
+    /** The device answers again after it was unreachable for {@code downMillis}. */
+    void recovered(String providerId, DeviceKind kind, long downMillis);
+
+    /** The provider left the model (a new configuration or fleet). */
+    void removed(String providerId);
+}

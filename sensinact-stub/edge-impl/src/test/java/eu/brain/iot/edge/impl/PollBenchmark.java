@@ -1,0 +1,622 @@
+package eu.brain.iot.edge.impl;
+
+import java.io.BufferedReader;
+import java.io.IOException;
+import java.io.InputStreamReader;
+import java.lang.management.GarbageCollectorMXBean;
+import java.lang.management.ManagementFactory;
+import java.lang.management.ThreadInfo;
+import java.lang.management.ThreadMXBean;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.Paths;
+import java.time.Duration;
+import java.util.ArrayDeque;
+import java.util.ArrayList;
+import java.util.Arrays;
+import java.util.Deque;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Locale;
+import java.util.Map;
+import java.util.Random;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.LongAdder;
+
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+
+/**
+ * The edge's polling benchmark (BENCHMARKS.md, "Edge polling"; issue 4). Not a test: nothing is asserted, and the
+ * name keeps Surefire away from it. Run it with {@code sensinact-stub/bench/poll-bench.sh}.
+ * <p>
+ * For each fleet size it starts robot-sim as a separate process on a generated map (clock running, 0.5 s steps),
+ * so that the edge's CPU is measured apart from the simulator's, then an {@link Edge} in this JVM that discovers
+ * the fleet ({@code GET /}) and polls every robot and door at the configured period, with an event sink that
+ * counts what would go to the bus. After a warm-up the poll counters are reset and a measured window follows.
+ * Printed per fleet size: polls/s answered, the share of polls on time (request within period &plusmn; 10% of the
+ * previous answered poll's), late, failed and skipped polls, the deviation |interval &minus; period| (p50, p99),
+ * events/s, the edge's process CPU (and its fleet thread's and HTTP threads'), the simulator's process CPU, GC,
+ * and the load average at start and end.
+ */
+public final class PollBenchmark {
+
+    static final String USAGE = """
+            Usage: sensinact-stub/bench/poll-bench.sh [options]      (edge polling benchmark; not a test)
+              --robots LIST        fleet sizes, comma separated (default 100,1000,10000)
+              --warmup S           seconds polled before measuring (default 20)
+              --duration S         seconds measured (default 30)
+              --period-ms N        poll period of each device (default 500)
+              --timeout-ms N       request timeout (default 1000)
+              --connections N      keep-alive connections to the fleet (default 64)
+              --io-threads N       edge HTTP client threads (default 1)
+              --moving F           share of robots kept moving: one per docking column, back and forth
+                                   between corridor and storage (default 0.1; 0 = every robot idle)
+              --seed N             which docking columns move (default 1)
+              --sim-jar FILE       robot-sim jar (default robot-sim/target/robot-sim.jar)
+              --sim-io-threads N   simulator HTTP threads (default: the simulator's, one per core)
+              --sim-java-opts S    extra JVM options of the simulator process (default none)
+              --width N --height N map size for every fleet size (default: 60x40 up to 100 robots,
+                                   200x100 up to 1,000, 2002x60 up to 10,000)
+              --help               this text
+            Prints one block per fleet size, then a summary table. Exit code 2 on a bad option, 1 when a run
+            could not be done.
+            """;
+
+    private static final ObjectMapper JSON = new ObjectMapper();
+
+    private final Options o;
+
+    private PollBenchmark(Options o) {
+        this.o = o;
+    }
+
+    public static void main(String[] args) throws Exception {
+        Options o;
+        try {
+            o = Options.parse(args);
+        } catch (IllegalArgumentException e) {
+            System.out.println("poll-bench: " + e.getMessage());
+            System.out.print(USAGE);
+            System.exit(2);
+            return;
+        }
+        if (o == null) {
+            System.out.print(USAGE);
+            return;
+        }
+        System.exit(new PollBenchmark(o).runAll());
+    }
+
+    private int runAll() throws Exception {
+        System.out.printf(Locale.ROOT, "poll-bench: %d cores (%s), %s %s, max heap %d MB; robot-sim %s%n",
+                Runtime.getRuntime().availableProcessors(), cpuModel(), System.getProperty("java.vm.name"),
+                System.getProperty("java.runtime.version"), Runtime.getRuntime().maxMemory() >> 20, o.simJar);
+        System.out.printf(Locale.ROOT, "settings: period %d ms, timeout %d ms, %d connections, %d HTTP thread(s); "
+                        + "warm-up %d s, measured %d s; %.0f%% of robots moving%n", o.periodMillis, o.timeoutMillis,
+                o.connections, o.ioThreads, o.warmup, o.duration, 100 * o.moving);
+        List<Result> results = new ArrayList<>();
+        for (int robots : o.robots) {
+            try {
+                results.add(run(robots));
+            } catch (Exception e) {
+                System.out.println("poll-bench: the run with " + robots + " robots failed: " + e);
+                e.printStackTrace(System.out);
+                return 1;
+            }
+            System.gc();
+        }
+        System.out.println();
+        System.out.println("| robots | polls/s | on time | late | failed | skipped | |dev| p50 / p99 ms | events/s "
+                + "| edge CPU (1 core / machine) | µs/poll | fleet thread | HTTP threads | sim CPU | load start / end |");
+        System.out.println("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+        for (Result r : results) {
+            System.out.println(r.row());
+        }
+        return 0;
+    }
+
+    private Result run(int robots) throws Exception {
+        String loadStart = loadAverage();
+        int[] size = mapSize(robots);
+        Path dir = Files.createTempDirectory("poll-bench");
+        Path map = dir.resolve("fleet-" + robots + ".map");
+        Path simLog = dir.resolve("robot-sim.log");
+        System.out.printf(Locale.ROOT, "%n== %,d robots (map %dx%d), load average %s%n", robots, size[0], size[1],
+                loadStart);
+        generate(robots, size, map);
+        Simulator sim = Simulator.start(o, map, simLog);
+        try {
+            if (o.moving > 0) {
+                long t0 = System.nanoTime();
+                int sent = sendErrands(sim.base, robots);
+                System.out.printf(Locale.ROOT, "%,d robots move back and forth (GoTo missions queued in %.1f s)%n",
+                        sent, (System.nanoTime() - t0) / 1e9);
+            }
+            CountingSink sink = new CountingSink();
+            FleetSettings settings = FleetSettings.of(sim.base.toString(), List.of(), List.of(), o.periodMillis,
+                    o.timeoutMillis, o.connections, o.ioThreads, 3, Math.max(8_000, o.periodMillis));
+            long started = System.nanoTime();
+            try (Edge edge = new Edge(settings, sink, EdgeLog.stderr())) {
+                awaitFirstRound(edge, robots);
+                int devices = edge.providers().size();
+                System.out.printf(Locale.ROOT, "edge: %,d devices (robots and doors), %,d answers after %.1f s; "
+                        + "warming up %d s%n", devices, edge.pollStats().answered(),
+                        (System.nanoTime() - started) / 1e9, o.warmup);
+                TimeUnit.SECONDS.sleep(o.warmup);
+
+                Cpu before = Cpu.now(sim.process);
+                long eventsBefore = sink.total.sum();
+                edge.resetPollStats();
+                TimeUnit.SECONDS.sleep(o.duration);
+                PollStats.Snapshot s = edge.pollStats();
+                Cpu after = Cpu.now(sim.process);
+                long events = sink.total.sum() - eventsBefore;
+                Result r = new Result(robots, devices, o.periodMillis, s, events, before, after, loadStart, loadAverage());
+                r.print(sink);
+                return r;
+            }
+        } finally {
+            sim.stop();
+            Files.deleteIfExists(map);
+        }
+    }
+
+    private int[] mapSize(int robots) {
+        if (o.width > 0) {
+            return new int[] {o.width, o.height};
+        }
+        if (robots <= 100) {
+            return new int[] {60, 40};
+        }
+        if (robots <= 1_000) {
+            return new int[] {200, 100};
+        }
+        if (robots <= 10_000) {
+            return new int[] {2002, 60}; // 1,000 docking columns: room for 10% movers
+        }
+        throw new IllegalArgumentException("more than 10,000 robots: give --width and --height");
+    }
+
+    private void generate(int robots, int[] size, Path map) throws IOException, InterruptedException {
+        Process p = new ProcessBuilder("java", "-jar", o.simJar.toString(), "generate", "--robots",
+                String.valueOf(robots), "--carts", String.valueOf(Math.min(2 * robots, 2_000)), "--width",
+                String.valueOf(size[0]), "--height", String.valueOf(size[1]), "--out", map.toString())
+                .redirectErrorStream(true).start();
+        String out = new String(p.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+        if (p.waitFor() != 0) {
+            throw new IOException("generating the map failed: " + out);
+        }
+    }
+
+    /**
+     * Keeps a share of the robots moving for the whole run, without robots blocking each other: in each chosen
+     * docking column, the robot nearest the corridor is given a queue of GoTo missions back and forth between the
+     * corridor and the far end of the storage area straight below it (one mover per column, so no two movers
+     * meet; robots do not plan around others). Each leg ends a mission, so the edge also sees mission ends.
+     *
+     * @return how many robots move
+     */
+    private int sendErrands(URI base, int robots) throws IOException, InterruptedException {
+        HttpClient http = HttpClient.newBuilder().connectTimeout(Duration.ofSeconds(5)).build();
+        HttpResponse<String> world = http.send(HttpRequest.newBuilder(base.resolve("world")).build(),
+                HttpResponse.BodyHandlers.ofString());
+        JsonNode w = JSON.readTree(world.body());
+        List<String> rows = new ArrayList<>();
+        w.path("map").forEach(r -> rows.add(r.asText()));
+        Map<Integer, JsonNode> front = new HashMap<>(); // column -> the robot nearest the corridor
+        for (JsonNode r : w.path("robots")) {
+            JsonNode f = front.get(r.path("x").asInt());
+            if (f == null || r.path("y").asInt() > f.path("y").asInt()) {
+                front.put(r.path("x").asInt(), r);
+            }
+        }
+        List<int[]> lanes = new ArrayList<>(); // {x, top, bottom}
+        List<String> movers = new ArrayList<>();
+        for (Map.Entry<Integer, JsonNode> e : front.entrySet()) {
+            int x = e.getKey();
+            int y = e.getValue().path("y").asInt() + 1;
+            while (y < rows.size() && cell(rows, x, y) == 'd') {
+                y++;
+            }
+            int top = y;
+            while (y < rows.size() && cell(rows, x, y) == '.') {
+                y++;
+            }
+            while (y < rows.size() && cell(rows, x, y) == 's') {
+                y++;
+            }
+            int bottom = y - 1;
+            if (cell(rows, x, top) == '.' && bottom > top + 1) {
+                lanes.add(new int[] {x, top, bottom});
+                movers.add(e.getValue().path("id").asText());
+            }
+        }
+        Random random = new Random(o.seed);
+        List<Integer> order = new ArrayList<>();
+        for (int i = 0; i < lanes.size(); i++) {
+            order.add(i);
+        }
+        java.util.Collections.shuffle(order, random);
+        int count = Math.min(lanes.size(), (int) Math.round(o.moving * robots));
+        if (count < Math.round(o.moving * robots)) {
+            System.out.printf(Locale.ROOT, "only %d docking columns: %d robots move instead of %.0f%n", lanes.size(),
+                    count, o.moving * robots);
+        }
+        long runSeconds = o.warmup + o.duration + 30L; // and the time to start
+        java.util.concurrent.Semaphore inFlight = new java.util.concurrent.Semaphore(32);
+        List<java.util.concurrent.CompletableFuture<?>> pending = new ArrayList<>();
+        int legsMax = 0;
+        for (int i = 0; i < count; i++) {
+            int[] lane = lanes.get(order.get(i));
+            legsMax = Math.max(legsMax, (int) (runSeconds * 2 / (lane[2] - lane[1])) + 2);
+        }
+        for (int leg = 0; leg < legsMax; leg++) { // every robot's missions in order: one leg of all at a time
+            for (int i = 0; i < count; i++) {
+                int[] lane = lanes.get(order.get(i));
+                URI add = base.resolve(movers.get(order.get(i))
+                        + "/robot_local_control/NavigationComponent/GoToComponent/add");
+                String goal = "{\"x\":" + lane[0] + ",\"y\":" + (leg % 2 == 0 ? lane[2] : lane[1]) + "}";
+                inFlight.acquire();
+                pending.add(http.sendAsync(HttpRequest.newBuilder(add).header("Content-Type", "application/json")
+                        .POST(HttpRequest.BodyPublishers.ofString(goal))
+                        .build(), HttpResponse.BodyHandlers.ofString()).whenComplete((a, error) -> {
+                            inFlight.release();
+                            if (error != null || a.statusCode() != 200) {
+                                System.out.println("poll-bench: " + add + " " + goal + ": "
+                                        + (error != null ? error : a.statusCode() + " " + a.body()));
+                            }
+                        }));
+            }
+            for (java.util.concurrent.CompletableFuture<?> f : pending) {
+                f.join();
+            }
+            pending.clear();
+        }
+        return count;
+    }
+
+    private static char cell(List<String> rows, int x, int y) {
+        return y < rows.size() && x < rows.get(y).length() ? rows.get(y).charAt(x) : '#';
+    }
+
+    private static void awaitFirstRound(Edge edge, int robots) throws InterruptedException {
+        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+        while (edge.pollStats().answered() < robots) {
+            if (System.nanoTime() > deadline) {
+                throw new IllegalStateException("the edge did not get " + robots + " answers within 120 s: "
+                        + edge.pollStats());
+            }
+            TimeUnit.MILLISECONDS.sleep(100);
+        }
+    }
+
+    static String loadAverage() {
+        try {
+            String[] f = Files.readString(Paths.get("/proc/loadavg")).trim().split(" ");
+            return f[0] + " " + f[1] + " " + f[2];
+        } catch (IOException e) {
+            return String.format(Locale.ROOT, "%.2f", ManagementFactory.getOperatingSystemMXBean().getSystemLoadAverage());
+        }
+    }
+
+    private static String cpuModel() {
+        try {
+            for (String line : Files.readAllLines(Paths.get("/proc/cpuinfo"))) {
+                if (line.startsWith("model name")) {
+                    return line.substring(line.indexOf(':') + 1).trim();
+                }
+            }
+        } catch (IOException e) {
+            // not Linux
+        }
+        return System.getProperty("os.arch");
+    }
+
+    /** What the bus would be handed: counted, by type. */
+    private static final class CountingSink implements EventSink {
+        final LongAdder total = new LongAdder();
+        final Map<String, LongAdder> byType = new ConcurrentHashMap<>();
+
+        @Override
+        public boolean offer(BrainIoTEvent event) {
+            total.increment();
+            byType.computeIfAbsent(event.getClass().getSimpleName(), k -> new LongAdder()).increment();
+            return true;
+        }
+    }
+
+    /** The simulator in its own process. */
+    private static final class Simulator {
+        final Process process;
+        final URI base;
+        private final Deque<String> tail;
+
+        private Simulator(Process process, URI base, Deque<String> tail) {
+            this.process = process;
+            this.base = base;
+            this.tail = tail;
+        }
+
+        static Simulator start(Options o, Path map, Path log) throws IOException, InterruptedException {
+            List<String> command = new ArrayList<>(List.of("java"));
+            if (!o.simJavaOpts.isBlank()) {
+                command.addAll(Arrays.asList(o.simJavaOpts.trim().split("\\s+")));
+            }
+            command.addAll(List.of("-jar", o.simJar.toString(), "--port", "0", "--map", map.toString(), "--quiet"));
+            if (o.simIoThreads > 0) {
+                command.addAll(List.of("--io-threads", String.valueOf(o.simIoThreads)));
+            }
+            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
+            Deque<String> tail = new ArrayDeque<>();
+            BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
+            URI base = null;
+            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
+            String line;
+            while (base == null && (line = out.readLine()) != null) {
+                remember(tail, line);
+                if (line.startsWith("robot-sim:")) {
+                    System.out.println(line);
+                }
+                if (line.startsWith("listening on ")) {
+                    base = URI.create(line.substring("listening on ".length()).trim());
+                }
+                if (System.nanoTime() > deadline) {
+                    break;
+                }
+            }
+            if (base == null) {
+                p.destroyForcibly();
+                throw new IOException("robot-sim did not start: " + String.join(" | ", tail));
+            }
+            Thread drain = new Thread(() -> {
+                try {
+                    String l;
+                    while ((l = out.readLine()) != null) {
+                        synchronized (tail) {
+                            remember(tail, l);
+                        }
+                    }
+                } catch (IOException e) {
+                    // the process ended
+                }
+            }, "robot-sim-output");
+            drain.setDaemon(true);
+            drain.start();
+            return new Simulator(p, base, tail);
+        }
+
+        private static void remember(Deque<String> tail, String line) {
+            if (tail.size() == 20) {
+                tail.removeFirst();
+            }
+            tail.addLast(line);
+        }
+
+        void stop() throws InterruptedException {
+            if (!process.isAlive()) {
+                synchronized (tail) {
+                    System.out.println("robot-sim had ended (exit " + process.exitValue() + "): "
+                            + String.join(" | ", tail));
+                }
+                return;
+            }
+            process.destroy();
+            if (!process.waitFor(10, TimeUnit.SECONDS)) {
+                process.destroyForcibly().waitFor();
+            }
+        }
+    }
+
+    /** CPU time of this process, of its threads by group, and of the simulator process, at one instant. */
+    private record Cpu(long wallNanos, long edgeNanos, long fleetNanos, long httpNanos, long simNanos, long gcCount,
+            long gcMillis) {
+
+        static Cpu now(Process sim) {
+            ThreadMXBean threads = ManagementFactory.getThreadMXBean();
+            long fleet = 0;
+            long http = 0;
+            for (ThreadInfo t : threads.getThreadInfo(threads.getAllThreadIds())) {
+                if (t == null) {
+                    continue;
+                }
+                long cpu = threads.getThreadCpuTime(t.getThreadId());
+                if (cpu < 0) {
+                    continue;
+                }
+                if (t.getThreadName().startsWith("edge-fleet")) {
+                    fleet += cpu;
+                } else if (t.getThreadName().startsWith("edge-http")) {
+                    http += cpu;
+                }
+            }
+            long gcCount = 0;
+            long gcMillis = 0;
+            for (GarbageCollectorMXBean gc : ManagementFactory.getGarbageCollectorMXBeans()) {
+                gcCount += Math.max(0, gc.getCollectionCount());
+                gcMillis += Math.max(0, gc.getCollectionTime());
+            }
+            return new Cpu(System.nanoTime(), cpuNanos(ProcessHandle.current()), fleet, http,
+                    cpuNanos(sim.toHandle()), gcCount, gcMillis);
+        }
+
+        private static long cpuNanos(ProcessHandle p) {
+            return p.info().totalCpuDuration().map(Duration::toNanos).orElse(-1L);
+        }
+    }
+
+    private record Result(int robots, int devices, long periodMillis, PollStats.Snapshot s, long events, Cpu before, Cpu after, String loadStart,
+            String loadEnd) {
+
+        double wallSeconds() {
+            return (after.wallNanos - before.wallNanos) / 1e9;
+        }
+
+        double percentOfCore(long beforeNanos, long afterNanos) {
+            return beforeNanos < 0 || afterNanos < 0 ? Double.NaN
+                    : 100.0 * (afterNanos - beforeNanos) / (after.wallNanos - before.wallNanos);
+        }
+
+        double edgeCore() {
+            return percentOfCore(before.edgeNanos, after.edgeNanos);
+        }
+
+        double simCore() {
+            return percentOfCore(before.simNanos, after.simNanos);
+        }
+
+        void print(CountingSink sink) {
+            int cores = Runtime.getRuntime().availableProcessors();
+            long due = s.onTime() + s.late() + s.failed() + s.skipped();
+            System.out.printf(Locale.ROOT, "measured %.1f s: polls sent %,d, answered %,d = %,.0f polls/s (expected %,.0f)%n",
+                    s.seconds(), s.sent(), s.answered(), s.pollsPerSecond(), devices * 1000.0 / periodMillis);
+            System.out.printf(Locale.ROOT, "on time %.2f%% (%,d of %,d due); late %,d, failed %,d, skipped %,d; "
+                            + "|interval - period| p50 %.1f ms, p99 %.1f ms%n", 100 * s.onTimeShare(), s.onTime(), due,
+                    s.late(), s.failed(), s.skipped(), s.deviationP50Millis(), s.deviationP99Millis());
+            Map<String, Long> types = new HashMap<>();
+            sink.byType.forEach((k, v) -> types.put(k, v.sum()));
+            System.out.printf(Locale.ROOT, "events %,d = %,.0f/s (since start, by type: %s)%n", events,
+                    events / wallSeconds(), types);
+            System.out.printf(Locale.ROOT, "edge CPU %.1f%% of one core = %.1f%% of the machine (%d cores), %.1f µs per "
+                            + "answered poll; fleet thread %.1f%%, HTTP threads %.1f%%, other (GC, JIT, ...) %.1f%%; "
+                            + "GC %d collections, %d ms%n",
+                    edgeCore(), edgeCore() / cores, cores, microsPerPoll(), fleetCore(), httpCore(),
+                    edgeCore() - fleetCore() - httpCore(), after.gcCount - before.gcCount,
+                    after.gcMillis - before.gcMillis);
+            System.out.printf(Locale.ROOT, "robot-sim CPU %.1f%% of one core; load average %s at start, %s at end%n",
+                    simCore(), loadStart, loadEnd);
+        }
+
+        double microsPerPoll() {
+            return s.answered() == 0 ? Double.NaN : (after.edgeNanos - before.edgeNanos) / 1e3 / s.answered();
+        }
+
+        double fleetCore() {
+            return percentOfCore(before.fleetNanos, after.fleetNanos);
+        }
+
+        double httpCore() {
+            return percentOfCore(before.httpNanos, after.httpNanos);
+        }
+
+        String row() {
+            int cores = Runtime.getRuntime().availableProcessors();
+            return String.format(Locale.ROOT, "| %,d | %,.0f | %.2f%% | %,d | %,d | %,d | %.1f / %.1f | %,.0f "
+                            + "| %.0f%% / %.0f%% | %.0f | %.0f%% | %.0f%% | %.0f%% | %s / %s |", robots, s.pollsPerSecond(),
+                    100 * s.onTimeShare(), s.late(), s.failed(), s.skipped(), s.deviationP50Millis(),
+                    s.deviationP99Millis(), events / wallSeconds(), edgeCore(), edgeCore() / cores, microsPerPoll(),
+                    fleetCore(),
+                    httpCore(), simCore(), loadStart, loadEnd);
+        }
+    }
+
+    /** The command line. */
+    private static final class Options {
+        List<Integer> robots = List.of(100, 1_000, 10_000);
+        int warmup = 20;
+        int duration = 30;
+        long periodMillis = 500;
+        long timeoutMillis = 1_000;
+        int connections = 64;
+        int ioThreads = 1;
+        double moving = 0.1;
+        long seed = 1;
+        Path simJar;
+        int simIoThreads;
+        String simJavaOpts = "";
+        int width;
+        int height;
+
+        /** @return the options, or {@code null} for --help */
+        static Options parse(String[] args) {
+            Options o = new Options();
+            String jar = null;
+            for (int i = 0; i < args.length; i++) {
+                String flag = args[i];
+                if (flag.equals("--help") || flag.equals("-h")) {
+                    return null;
+                }
+                if (i + 1 >= args.length) {
+                    throw new IllegalArgumentException(flag + " needs a value");
+                }
+                String v = args[++i];
+                switch (flag) {
+                    case "--robots" -> {
+                        List<Integer> sizes = new ArrayList<>();
+                        for (String part : v.split(",")) {
+                            sizes.add(number(flag, part.replace("_", ""), 1, 1_000_000));
+                        }
+                        o.robots = sizes;
+                    }
+                    case "--warmup" -> o.warmup = number(flag, v, 0, 3_600);
+                    case "--duration" -> o.duration = number(flag, v, 1, 3_600);
+                    case "--period-ms" -> o.periodMillis = number(flag, v, 1, 3_600_000);
+                    case "--timeout-ms" -> o.timeoutMillis = number(flag, v, 1, 3_600_000);
+                    case "--connections" -> o.connections = number(flag, v, 1, 10_000);
+                    case "--io-threads" -> o.ioThreads = number(flag, v, 1, 64);
+                    case "--moving" -> {
+                        try {
+                            o.moving = Double.parseDouble(v);
+                        } catch (NumberFormatException e) {
+                            o.moving = -1;
+                        }
+                        if (!(o.moving >= 0 && o.moving <= 1)) {
+                            throw new IllegalArgumentException("--moving must be a share 0..1, found '" + v + "'");
+                        }
+                    }
+                    case "--seed" -> o.seed = number(flag, v, 0, Integer.MAX_VALUE);
+                    case "--sim-jar" -> jar = v;
+                    case "--sim-io-threads" -> o.simIoThreads = number(flag, v, 1, 64);
+                    case "--sim-java-opts" -> o.simJavaOpts = v;
+                    case "--width" -> o.width = number(flag, v, 10, 10_000);
+                    case "--height" -> o.height = number(flag, v, 10, 10_000);
+                    default -> throw new IllegalArgumentException("unknown option " + flag);
+                }
+            }
+            if ((o.width > 0) != (o.height > 0)) {
+                throw new IllegalArgumentException("--width and --height go together");
+            }
+            o.simJar = simJar(jar);
+            return o;
+        }
+
+        private static Path simJar(String given) {
+            if (given != null) {
+                Path p = Paths.get(given);
+                if (!Files.isRegularFile(p)) {
+                    throw new IllegalArgumentException("--sim-jar: no file " + p.toAbsolutePath());
+                }
+                return p.toAbsolutePath();
+            }
+            for (String candidate : List.of("robot-sim/target/robot-sim.jar", "../robot-sim/target/robot-sim.jar")) {
+                Path p = Paths.get(candidate);
+                if (Files.isRegularFile(p)) {
+                    return p.toAbsolutePath();
+                }
+            }
+            throw new IllegalArgumentException("no robot-sim/target/robot-sim.jar: build it (mvn -B -q -pl robot-sim "
+                    + "package -DskipTests) or give --sim-jar");
+        }
+
+        private static int number(String flag, String v, int min, int max) {
+            try {
+                int n = Integer.parseInt(v.trim());
+                if (n >= min && n <= max) {
+                    return n;
+                }
+            } catch (NumberFormatException e) {
+                // below
+            }
+            throw new IllegalArgumentException(flag + " must be a whole number " + min + ".." + max + ", found '" + v
+                    + "'");
+        }
+    }
+}

@@ -1,0 +1,13 @@
+/**
+ * The edge's device model in the sensiNact manner: providers (a robot, a door) hold services ({@code position},
+ * {@code state}, {@code cart}, {@code mission}, {@code door}, ...) that hold resources ({@code x}, {@code y},
+ * {@code state}, {@code detect}, ...), each with a value, a timestamp and a status. Read it, subscribe to its
+ * changes, and act on devices through {@link eu.brain.iot.edge.model.api.DeviceModel}. Since 1.1, the polling and
+ * publishing counters ({@link eu.brain.iot.edge.model.api.PollMonitor}).
+ */
+@Export
+@Version("1.1.0")
+package eu.brain.iot.edge.model.api;
+
+import org.osgi.annotation.bundle.Export;
+import org.osgi.annotation.versioning.Version;
