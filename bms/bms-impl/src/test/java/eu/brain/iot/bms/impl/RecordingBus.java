@@ -22,6 +22,17 @@ final class RecordingBus implements EventBus {
         throw new UnsupportedOperationException("the BMS publishes typed alerts");
     }
 
+    @Override
+    public boolean tryDeliver(BrainIoTEvent event) {
+        deliver(event);
+        return true;
+    }
+
+    @Override
+    public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
+        throw new UnsupportedOperationException("the BMS publishes typed alerts");
+    }
+
     <T extends BrainIoTEvent> List<T> of(Class<T> type) {
         return alerts.stream().filter(type::isInstance).map(type::cast).toList();
     }

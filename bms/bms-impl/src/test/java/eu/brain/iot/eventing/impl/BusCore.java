@@ -57,6 +57,16 @@ public final class BusCore implements EventBus, HeldEvents {
     }
 
     @Override
+    public boolean tryDeliver(BrainIoTEvent event) {
+        return bus.tryDeliver(event);
+    }
+
+    @Override
+    public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
+        return bus.tryDeliver(eventType, eventData);
+    }
+
+    @Override
     public List<HeldType> held() {
         return bus.held();
     }
