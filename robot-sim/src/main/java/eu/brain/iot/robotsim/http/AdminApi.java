@@ -33,7 +33,7 @@ final class AdminApi {
     }
 
     /** @param rest the path segments after {@code admin} */
-    void handle(Exchange ex, List<String> rest) {
+    void handle(ServerExchange ex, List<String> rest) {
         try {
             if (rest.size() == 1 && rest.get(0).equals("step")) {
                 if (Route.methodIs(ex, HttpMethod.POST)) {
@@ -53,7 +53,7 @@ final class AdminApi {
         }
     }
 
-    private void step(Exchange ex) throws ApiException {
+    private void step(ServerExchange ex) throws ApiException {
         JsonBody body = JsonBody.parse(ex.body(), Set.of("steps"));
         int steps = body.has("steps") ? body.requireInt("steps") : 1;
         if (steps < 1 || steps > MAX_STEPS_PER_REQUEST) {
@@ -63,7 +63,7 @@ final class AdminApi {
         Replies.whenDone(ex, world.step(steps).thenApply(step -> Map.of("step", step)));
     }
 
-    private void fleetFaults(Exchange ex) throws ApiException {
+    private void fleetFaults(ServerExchange ex) throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.GET, HttpMethod.POST, HttpMethod.DELETE)) {
             return;
         }
@@ -75,7 +75,7 @@ final class AdminApi {
         ex.json(200, describe());
     }
 
-    private void robotFaults(Exchange ex, String id) throws ApiException {
+    private void robotFaults(ServerExchange ex, String id) throws ApiException {
         int robot = robotIndex.applyAsInt(id);
         if (robot < 0) {
             throw new ApiException(404, null, "unknown robot '" + id + "'");

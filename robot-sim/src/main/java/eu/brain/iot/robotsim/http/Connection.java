@@ -36,7 +36,7 @@ import java.util.concurrent.TimeUnit;
  * the JSON error of robot-sim's API.
  * <p>
  * Threads: every field is owned by the channel's event loop. Answers computed elsewhere (the world thread) reach
- * {@link #answer} through the event loop (see {@link Exchange}).
+ * {@link #answer} through the event loop (see {@link ServerExchange}).
  */
 final class Connection extends ChannelDuplexHandler {
     private enum State { IDLE, READING, BUSY, CLOSING }
@@ -163,7 +163,7 @@ final class Connection extends ChannelDuplexHandler {
         discardRequest();
         String uri = request.uri();
         int query = uri.indexOf('?');
-        Exchange ex = new Exchange(ctx, this, request.method(), query < 0 ? uri : uri.substring(0, query), bytes,
+        ServerExchange ex = new ServerExchange(ctx, this, request.method(), query < 0 ? uri : uri.substring(0, query), bytes,
                 HttpUtil.isKeepAlive(request), request.protocolVersion());
         try {
             gate.check(request.method(), request.protocolVersion(), request.headers(), localPort());
@@ -183,7 +183,7 @@ final class Connection extends ChannelDuplexHandler {
         String path = head != null && head.decoderResult().isSuccess() ? head.uri() : "/";
         HttpVersion version = head != null ? head.protocolVersion() : HttpVersion.HTTP_1_1;
         discardRequest();
-        new Exchange(ctx, this, method, path, new byte[0], false, version).error(status, null, message, null);
+        new ServerExchange(ctx, this, method, path, new byte[0], false, version).error(status, null, message, null);
     }
 
     /** Writes the answer of the request in progress; on the event loop. */

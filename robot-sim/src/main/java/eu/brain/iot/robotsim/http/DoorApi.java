@@ -20,7 +20,7 @@ final class DoorApi {
     }
 
     /** @param rest the path segments after {@code door_controller} */
-    void handle(Exchange ex, int door, List<String> rest) {
+    void handle(ServerExchange ex, int door, List<String> rest) {
         if (rest.size() != 1) {
             Route.notFound(ex);
             return;
@@ -40,7 +40,7 @@ final class DoorApi {
         }
     }
 
-    private void command(Exchange ex, int door) {
+    private void command(ServerExchange ex, int door) {
         try {
             double data = JsonBody.parse(ex.body(), COMMAND_FIELDS).requireNumber("data");
             if (data != 0.0 && data != 1.0) {

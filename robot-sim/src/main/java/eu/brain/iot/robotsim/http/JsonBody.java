@@ -25,7 +25,7 @@ final class JsonBody {
      */
     static JsonBody parse(byte[] body, Set<String> allowed) throws ApiException {
         ObjectNode object;
-        if (body.length == 0 || Exchange.utf8(body).isBlank()) {
+        if (body.length == 0 || ServerExchange.utf8(body).isBlank()) {
             object = Json.MAPPER.createObjectNode();
         } else {
             JsonNode tree = StrictJsonReader.read(body, MAX_DEPTH);

@@ -10,7 +10,7 @@ final class Replies {
     }
 
     /** Answers 200 with the result as JSON, or the error the world gave. */
-    static void whenDone(Exchange ex, CompletableFuture<?> work) {
+    static void whenDone(ServerExchange ex, CompletableFuture<?> work) {
         work.whenComplete((result, failure) -> {
             if (failure == null) {
                 if (result instanceof byte[] bytes) {
@@ -24,7 +24,7 @@ final class Replies {
         });
     }
 
-    static void fail(Exchange ex, Throwable failure) {
+    static void fail(ServerExchange ex, Throwable failure) {
         Throwable cause = failure instanceof CompletionException && failure.getCause() != null
                 ? failure.getCause() : failure;
         if (cause instanceof ApiException api) {

@@ -35,7 +35,7 @@ final class RobotApi {
     }
 
     /** @param rest the path segments after {@code robot_local_control} */
-    void handle(Exchange ex, int robot, String id, List<String> rest) {
+    void handle(ServerExchange ex, int robot, String id, List<String> rest) {
         FaultSettings f = faults.effective(robot);
         ex.delay(f.latencyMs());
         FaultAction action = faults.next(robot, f);
@@ -91,7 +91,7 @@ final class RobotApi {
         return null;
     }
 
-    private void add(Exchange ex, int robot, String id, MissionType type) throws ApiException {
+    private void add(ServerExchange ex, int robot, String id, MissionType type) throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.POST)) {
             return;
         }
@@ -122,7 +122,7 @@ final class RobotApi {
         return doc;
     }
 
-    private void cancel(Exchange ex, int robot, String id, MissionType type) throws ApiException {
+    private void cancel(ServerExchange ex, int robot, String id, MissionType type) throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.POST)) {
             return;
         }
@@ -138,7 +138,7 @@ final class RobotApi {
         }));
     }
 
-    private void query(Exchange ex, int robot, String id, MissionType type) throws ApiException {
+    private void query(ServerExchange ex, int robot, String id, MissionType type) throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.GET, HttpMethod.POST)) {
             return;
         }

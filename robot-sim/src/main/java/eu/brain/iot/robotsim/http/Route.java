@@ -11,7 +11,7 @@ final class Route {
      * Refuses a request whose method is not one of {@code allowed} with 405 and an Allow header. HEAD is allowed
      * wherever GET is.
      */
-    static boolean methodIs(Exchange ex, HttpMethod... allowed) {
+    static boolean methodIs(ServerExchange ex, HttpMethod... allowed) {
         boolean get = false;
         for (HttpMethod m : allowed) {
             if (m.equals(ex.method())) {
@@ -34,7 +34,7 @@ final class Route {
         return false;
     }
 
-    static void notFound(Exchange ex) {
+    static void notFound(ServerExchange ex) {
         ex.error(404, null, "no such endpoint: " + ex.method() + " " + ex.path()
                 + " (see robot-sim/README.md for the API)", null);
     }

@@ -23,7 +23,7 @@ final class Router {
         this.worldApi = worldApi;
     }
 
-    void route(Exchange ex) {
+    void route(ServerExchange ex) {
         List<String> segments = segments(ex.path());
         if (segments.isEmpty()) {
             worldApi.index(ex);
@@ -38,7 +38,7 @@ final class Router {
         }
     }
 
-    private void device(Exchange ex, String id, List<String> rest) {
+    private void device(ServerExchange ex, String id, List<String> rest) {
         String kind = rest.isEmpty() ? "" : rest.get(0);
         List<String> after = rest.isEmpty() ? rest : rest.subList(1, rest.size());
         if (kind.equals("robot_local_control")) {

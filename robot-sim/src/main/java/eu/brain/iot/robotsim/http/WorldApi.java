@@ -17,14 +17,14 @@ final class WorldApi {
         this.index = Json.bytes(index);
     }
 
-    void index(Exchange ex) {
+    void index(ServerExchange ex) {
         if (Route.methodIs(ex, HttpMethod.GET)) {
             ex.json(200, index);
         }
     }
 
     /** @param rest the path segments after {@code world} */
-    void handle(Exchange ex, List<String> rest) {
+    void handle(ServerExchange ex, List<String> rest) {
         if (rest.isEmpty()) {
             if (Route.methodIs(ex, HttpMethod.GET)) {
                 Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.world(a.world()))));

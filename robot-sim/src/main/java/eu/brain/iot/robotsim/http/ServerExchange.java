@@ -17,11 +17,11 @@ import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 /**
- * One request and its answer. Created on a Netty I/O thread; may be answered from any thread: the answer is handed to
+ * One request robot-sim received and the answer it gives (the server side of an HTTP exchange). Created on a Netty I/O thread; may be answered from any thread: the answer is handed to
  * the connection's event loop, where the {@link Connection} writes it and reads the next request. Fault injection
  * hooks in here: added latency and malformed bodies. A HEAD request gets the headers of the GET answer, no body.
  */
-final class Exchange {
+final class ServerExchange {
     private static final AsciiString APPLICATION_JSON = AsciiString.cached("application/json");
 
     private final ChannelHandlerContext ctx;
@@ -34,7 +34,7 @@ final class Exchange {
     private int delayMs;
     private boolean malformed;
 
-    Exchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
+    ServerExchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
              boolean keepAlive, HttpVersion version) {
         this.ctx = ctx;
         this.connection = connection;
