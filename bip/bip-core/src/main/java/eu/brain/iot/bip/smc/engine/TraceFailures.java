@@ -15,7 +15,7 @@ final class TraceFailures {
      */
     static String describe(long trace, long seed, String step, Throwable e) {
         String where = trace < 0 ? "the simulated system could not be created"
-                : "trace " + trace + " (seed " + seed + ") failed " + (step.isEmpty() ? "in its initial transitions"
+                : "trace " + trace + " (seed " + seed + ") failed " + (step.isEmpty() ? "in its initial state"
                         : "at step " + step);
         return where + ": " + what(e) + (trace < 0 ? "" : " (the same seed gives the same trace again)");
     }

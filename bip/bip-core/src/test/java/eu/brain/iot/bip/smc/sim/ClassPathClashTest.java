@@ -106,7 +106,7 @@ class ClassPathClashTest {
         assertTimeoutPreemptively(Duration.ofSeconds(60), () -> assertThatThrownBy(
                 () -> new SmcRunner(simulator, List.of(q), options).run(0, null))
                 .isInstanceOf(TraceFailureException.class)
-                .hasMessageStartingWith("trace 0 (seed 1) failed in its initial transitions: the Java compiled for "
+                .hasMessageStartingWith("trace 0 (seed 1) failed in its initial state: the Java compiled for "
                         + "the model failed to link (java.lang.NoSuchMethodError")
                 .hasMessageContaining("please report it with the model; '--engine interpreted' checks the same query"));
     }
