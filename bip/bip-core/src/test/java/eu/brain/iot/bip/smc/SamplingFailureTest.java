@@ -66,7 +66,7 @@ class SamplingFailureTest {
                 + "FlakySensor threw java\\.lang\\.IllegalStateException: sensor 7 unplugged; fix that class .*"
                 + "\\(the same seed gives the same trace again\\)");
         String trace = e.getMessage().replaceAll("^trace (\\d+) .*", "$1");
-        assertThat(Long.parseLong(trace)).as("not the first trace: chunks after the first are involved")
+        assertThat(Long.parseLong(trace)).as("the failing trace is not the first one")
                 .isGreaterThan(0);
         assertThat(failure(s, q, FlakySensor::new, SystemSimulator.Engine.COMPILED, 1).getMessage())
                 .as("one thread").isEqualTo(e.getMessage());
