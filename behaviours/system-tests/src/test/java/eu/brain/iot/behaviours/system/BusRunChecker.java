@@ -27,8 +27,9 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  * <p>
  * The log is cut into SMC steps: an internal transition, a private port, an environment port (with the event's
  * data), or an interaction: the initiator's transition (a broadcast's trigger, a rendezvous' coordinator) together
- * with the transitions its connector event caused in the other participants, at the initiator's place in the log.
- * Each step must be, in the state the previous ones reached, one of the SMC's candidates: an atom's internal step,
+ * with the transitions its connector event caused in the other participants. The steps are taken in the bus's order,
+ * each atom's in the order it took them ({@link #check}). Each step must be, in the state the previous ones reached,
+ * one of the SMC's candidates: an atom's internal step,
  * an enabled private port, an enabled environment port, or a connector interaction that is enabled and maximal
  * ({@link SystemRun#candidates}: the atoms' priorities applied); each transition must go between the places the bus
  * reported. Fails at the first step that is not, saying what the bus did and what the SMC could do.
