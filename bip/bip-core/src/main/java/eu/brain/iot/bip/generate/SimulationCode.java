@@ -69,7 +69,8 @@ final class SimulationCode {
         if (eu.brain.iot.bip.smc.runtime.Builtins.isBuiltin(call.name(), types, result)) {
             return random + "." + call.name() + "(" + String.join(", ", args) + ")";
         }
-        String generic = simulation + ".call(" + JavaNames.literal(call.name()) + ", java.util.List.of("
+        String generic = "eu.brain.iot.bip.smc.runtime.Builtins.simulate(" + simulation + ", "
+                + JavaNames.literal(call.name()) + ", java.util.List.of("
                 + String.join(", ", types.stream().map(JavaNames::literal).toList()) + "), "
                 + JavaNames.literal(result) + ", new Object[] {" + String.join(", ", args) + "}, " + random + ")";
         return switch (call.result().kind()) {

@@ -228,6 +228,53 @@ public final class SystemRun {
         };
     }
 
+    /**
+     * @return the enabled ports (after the atoms' priorities) of the open system's environment: exported ports that
+     *         no connector binds and that are not extern ports. The statistical model checker never fires them (a
+     *         closed system models its environment in BIP); a check of an open system does, with
+     *         {@link #fromEnvironment}.
+     */
+    public List<Candidate> environmentCandidates() {
+        List<Candidate> list = new ArrayList<>();
+        for (Map.Entry<String, AtomRun> a : atoms.entrySet()) {
+            for (String port : a.getValue().enabledPorts()) {
+                if (environmentPort(a.getKey(), port)) {
+                    list.add(new Candidate(null, List.of(new Endpoint(a.getKey(), port, null)), 0));
+                }
+            }
+        }
+        return list;
+    }
+
+    /** @return whether {@code atom.port} is the environment's (exported, bound by no connector, not extern) */
+    public boolean environmentPort(String atom, String port) {
+        PortDecl decl = atoms.get(atom).type().port(port).orElseThrow();
+        return decl.exported() && !decl.isExtern() && system.connectors().stream().flatMap(k -> k.endpoints().stream())
+                .noneMatch(e -> atom.equals(e.atom()) && port.equals(e.port()));
+    }
+
+    /**
+     * The environment fires one of its ports ({@link #environmentCandidates}) with its data: the port's data take
+     * the values, then its transition fires. An event the port cannot take now is no step (the deployed behaviour
+     * ignores it).
+     *
+     * @param values the values of the port's data, in its port type's parameter order
+     * @return whether the port was enabled and fired
+     */
+    public boolean fromEnvironment(String atom, String port, List<Object> values) {
+        AtomRun run = atoms.get(atom);
+        if (run == null || !environmentPort(atom, port)) {
+            throw new IllegalArgumentException(atom + "." + port + " is not a port of the environment; environment "
+                    + "ports are exported and bound by no connector");
+        }
+        if (!run.enabledPorts().contains(port)) {
+            return false;
+        }
+        setPortData(run, port, values);
+        run.fire(port);
+        return true;
+    }
+
     /** @return the run's errors so far (events refused by extern ports of policy error), oldest first */
     public List<String> errors() {
         return List.copyOf(errors);

@@ -151,6 +151,54 @@ class SystemRunTest {
         assertThat(run.atom("o").marking()).containsExactly("COLLISION");
     }
 
+    @Test
+    void theEnvironmentFiresTheExportedPortsNoConnectorBinds() {
+        SystemRun run = run("""
+                package Open
+                  port type Status(float position, int detect)
+                  port type Go()
+                  atom type Robot()
+                    data float position
+                    data int detect
+                    export port Status poll(position, detect)
+                    export port Go go()
+                    place START, MOVED
+                    initial to START
+                    on poll from START to MOVED provided (detect == 0)
+                    on go from MOVED to START
+                  end
+                  atom type Peer()
+                    export port Go go()
+                    place P
+                    initial to P
+                    on go from P to P
+                  end
+                  connector type Sync(Go a, Go b)
+                    define a b
+                  end
+                  compound type C()
+                    component Robot r()
+                    component Peer q()
+                    connector Sync s(r.go, q.go)
+                  end
+                end
+                """, new ArrayList<>());
+        assertThat(run.environmentPort("r", "poll")).isTrue();
+        assertThat(run.environmentPort("r", "go")).as("bound by a connector").isFalse();
+        assertThat(run.environmentPort("q", "go")).isFalse();
+        assertThat(run.candidates()).as("the SMC never fires the environment's ports").isEmpty();
+        assertThat(run.environmentCandidates()).extracting(Object::toString).containsExactly("[r.poll]");
+        assertThat(run.fromEnvironment("r", "poll", List.of(2.5, 0))).isTrue();
+        assertThat(run.atom("r").marking()).containsExactly("MOVED");
+        assertThat(run.atom("r").values()).containsEntry("position", 2.5).containsEntry("detect", 0);
+        assertThat(run.environmentCandidates()).isEmpty();
+        assertThat(run.fromEnvironment("r", "poll", List.of(3.0, 4))).as("not enabled: no step").isFalse();
+        assertThat(run.atom("r").get("position")).isEqualTo(2.5);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> run.fromEnvironment("r", "go", List.of()))
+                .isInstanceOf(IllegalArgumentException.class).hasMessageContaining("r.go is not a port of the "
+                        + "environment");
+    }
+
     private static final String SENSORS = """
             package Sensors
               port type Reading(const int value)

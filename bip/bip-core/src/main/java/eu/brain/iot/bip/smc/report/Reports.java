@@ -1,5 +1,7 @@
 package eu.brain.iot.bip.smc.report;
 
+import java.math.BigDecimal;
+import java.math.MathContext;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Locale;
@@ -22,9 +24,18 @@ public final class Reports {
         return String.join(" ", parts);
     }
 
-    /** @return a parameter value: whole numbers without a fraction */
+    /**
+     * @return a parameter value, short: whole numbers without a fraction, others to 6 significant digits without
+     *         trailing zeros ({@code 0.6}, not {@code 0.600000}; a sweep's {@code 0.1 + 0.2} prints {@code 0.3})
+     */
     public static String number(double v) {
-        return v == Math.rint(v) && Math.abs(v) < 1e15 ? Long.toString((long) v) : String.format(Locale.ROOT, "%g", v);
+        if (v == Math.rint(v) && Math.abs(v) < 1e15) {
+            return Long.toString((long) v);
+        }
+        if (!Double.isFinite(v)) {
+            return Double.toString(v);
+        }
+        return new BigDecimal(v).round(new MathContext(6)).stripTrailingZeros().toPlainString();
     }
 
     /** @return the verdict column: "holds", "REFUTED", or "" for an estimate */

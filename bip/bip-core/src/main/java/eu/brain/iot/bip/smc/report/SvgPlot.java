@@ -45,13 +45,18 @@ public final class SvgPlot {
         }
         double xmin = Double.POSITIVE_INFINITY;
         double xmax = Double.NEGATIVE_INFINITY;
+        boolean integers = true;
         for (List<PointResult> l : lines.values()) {
             for (PointResult r : l) {
                 xmin = Math.min(xmin, r.params()[0]);
                 xmax = Math.max(xmax, r.params()[0]);
+                integers &= r.params()[0] == Math.rint(r.params()[0]);
             }
         }
-        if (xmax <= xmin) {
+        if (lines.isEmpty()) {
+            xmin = 0;
+            xmax = 1;
+        } else if (xmax <= xmin) {
             xmax = xmin + 1;
         }
         StringBuilder s = new StringBuilder();
@@ -68,11 +73,11 @@ public final class SvgPlot {
                     + "<text x=\"%d\" y=\"%.1f\" text-anchor=\"end\">%.1f</text>%n", LEFT, y, LEFT + pw, y, LEFT - 6,
                     y + 4, i / 10.0));
         }
-        for (int i = 0; i <= 5; i++) {
-            double xv = xmin + (xmax - xmin) * i / 5;
-            double x = LEFT + pw * i / 5.0;
-            s.append(String.format(Locale.ROOT, "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">%s</text>%n", x,
-                    TOP + ph + 18, Reports.number(Math.round(xv * 1000) / 1000.0)));
+        for (double xv : ticks(xmin, xmax, integers)) {
+            double x = LEFT + pw * (xv - xmin) / (xmax - xmin);
+            s.append(String.format(Locale.ROOT, "<line x1=\"%.1f\" y1=\"%d\" x2=\"%.1f\" y2=\"%d\" stroke=\"black\"/>"
+                    + "<text x=\"%.1f\" y=\"%d\" text-anchor=\"middle\">%s</text>%n", x, TOP + ph, x, TOP + ph + 5, x,
+                    TOP + ph + 18, Reports.number(xv)));
         }
         s.append(String.format(Locale.ROOT, "<rect x=\"%d\" y=\"%d\" width=\"%d\" height=\"%d\" fill=\"none\" "
                 + "stroke=\"black\"/>%n", LEFT, TOP, pw, ph));
@@ -102,6 +107,35 @@ public final class SvgPlot {
         }
         s.append("</svg>\n");
         return s.toString();
+    }
+
+    /**
+     * Ticks for an axis from {@code min} to {@code max}: the smallest step of 1, 2 or 5 times a power of ten (at
+     * least 1 when the values are whole numbers) that puts at most 6 ticks, at its multiples, within the range.
+     */
+    static List<Double> ticks(double min, double max, boolean integers) {
+        double base = Math.pow(10, Math.floor(Math.log10((max - min) / 6)));
+        double step = base;
+        // 1, 2, 5, 10, 20, 50, ... times base
+        for (int k = 1; integers && step < 1 || count(min, max, step) > 6; k++) {
+            step = new double[] {1, 2, 5}[k % 3] * base * Math.pow(10, k / 3);
+        }
+        // tick i is i * step, rounded to the step's decimals, so 3 * 0.2 is 0.6
+        int decimals = Math.max(0, (int) -Math.floor(Math.log10(step) + 1e-9));
+        double scale = Math.pow(10, decimals);
+        List<Double> ticks = new ArrayList<>();
+        for (long i = first(min, step); i * step <= max + step * 1e-9; i++) {
+            ticks.add(Math.round(i * step * scale) / scale);
+        }
+        return ticks;
+    }
+
+    private static long first(double min, double step) {
+        return (long) Math.ceil(min / step - 1e-9);
+    }
+
+    private static long count(double min, double max, double step) {
+        return (long) Math.floor(max / step + 1e-9) - first(min, step) + 1;
     }
 
     private static String escape(String s) {

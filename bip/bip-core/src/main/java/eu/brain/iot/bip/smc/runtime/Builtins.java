@@ -37,6 +37,43 @@ public final class Builtins {
                 default -> random.bernoulli(((Number) args[0]).doubleValue());
             };
         }
-        return externs.call(name, paramTypes, resultType, args, random);
+        return simulate(externs, name, paramTypes, resultType, args, random);
+    }
+
+    /**
+     * Calls the model's simulation of an extern function (both engines go through here): what it throws, and a
+     * result of another type than the model declares, become an {@link ExternSimulationException} naming the
+     * function and the class, so a failing trace says whose code to fix.
+     */
+    public static Object simulate(SimulationExterns externs, String name, List<String> paramTypes, String resultType,
+            Object[] args, TraceRandom random) {
+        Object result;
+        try {
+            result = externs.call(name, paramTypes, resultType, args, random);
+        } catch (StochasticException e) {
+            throw e;
+        } catch (RuntimeException | LinkageError e) {
+            throw new ExternSimulationException(what(externs, name, paramTypes, resultType) + " threw " + e
+                    + "; fix that class (it must answer every call the model makes)", e);
+        }
+        boolean fits = switch (resultType) {
+            case "int" -> result instanceof Integer;
+            case "float" -> result instanceof Number;
+            case "bool" -> result instanceof Boolean;
+            case "string" -> result instanceof String;
+            default -> true;
+        };
+        if (!fits) {
+            throw new ExternSimulationException(what(externs, name, paramTypes, resultType) + " answered "
+                    + (result == null ? "null" : result + " (" + result.getClass().getName() + ")") + " where the model "
+                    + "declares " + resultType + "; fix that class (int: Integer, float: a Number, bool: Boolean, "
+                    + "string: String)", null);
+        }
+        return result;
+    }
+
+    private static String what(SimulationExterns externs, String name, List<String> paramTypes, String resultType) {
+        return "the simulation of extern function " + (resultType.equals("no value") ? "" : resultType + " ") + name + "(" + String.join(", ", paramTypes)
+                + ") in " + (externs == SimulationExterns.NONE ? "no class" : "class " + externs.getClass().getName());
     }
 }

@@ -70,14 +70,15 @@ final class InterpretedSystem implements SimulatedSystem, Term.State {
             return false;
         }
         Choice c = choices.size() == 1 ? choices.get(0) : choices.get(random.nextInt(choices.size()));
+        // named before it runs, like the compiled driver: a step that fails is the one lastStep() names
         if (c.internal() >= 0) {
-            atoms.get(c.internal()).internalStep();
             last = "internal " + system.atoms().get(c.internal()).path();
+            atoms.get(c.internal()).internalStep();
         } else {
-            run.execute(c.candidate());
             last = c.candidate().connector() == null
                     ? c.candidate().ports().get(0).atom() + "." + c.candidate().ports().get(0).port()
                     : c.candidate().toString();
+            run.execute(c.candidate());
         }
         return true;
     }

@@ -30,7 +30,9 @@ import eu.brain.iot.bip.smc.runtime.SimulatedSystem;
 
 /**
  * Compiles generated sources in memory with the JDK's compiler (javax.tools) and loads them in a fresh class loader
- * whose parent is bip-core's, so the classes of one model never meet another's.
+ * whose parent is bip-core's, so the classes of one model never meet another's. The loader defines every class it
+ * compiled itself (child first): the deployed classes of the same names (a behaviour jar on the class path of a test
+ * or of the Maven goal) are never used in their place, so the code compiled from the model is the code that runs.
  */
 final class RuntimeCompiler {
 
@@ -47,6 +49,12 @@ final class RuntimeCompiler {
     }
 
     static ClassLoader compile(List<JavaFile> files, List<Path> classpath) throws CompileException {
+        return compile(files, classpath, RuntimeCompiler.class.getClassLoader());
+    }
+
+    /** @param parent where every class that was not compiled here comes from (bip-core's runtime, the JDK) */
+    static ClassLoader compile(List<JavaFile> files, List<Path> classpath, ClassLoader parent)
+            throws CompileException {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();
         if (javac == null) {
             throw new CompileException("no Java compiler in this runtime (run on a JDK, not a JRE)");
@@ -100,16 +108,49 @@ final class RuntimeCompiler {
         } catch (IOException e) {
             throw new UncheckedIOException(e);
         }
-        return new ClassLoader(RuntimeCompiler.class.getClassLoader()) {
-            @Override
-            protected Class<?> findClass(String name) throws ClassNotFoundException {
-                byte[] bytes = classes.get(name);
-                if (bytes == null) {
-                    throw new ClassNotFoundException(name);
-                }
-                return defineClass(name, bytes, 0, bytes.length);
+        return new GeneratedClassLoader(classes, parent);
+    }
+
+    /**
+     * Child first for the classes it holds: a class compiled here is defined here even when the parent knows a class
+     * of that name (the deployed one: same name, another runtime package, so the generated bridge could not reach
+     * its package-private fields); every other class comes from the parent. Classes are defined under the lock
+     * {@link ClassLoader#getClassLoadingLock} gives (the loader is parallel capable, sampling threads share it).
+     */
+    static final class GeneratedClassLoader extends ClassLoader {
+        static {
+            registerAsParallelCapable();
+        }
+
+        private final Map<String, byte[]> classes;
+
+        GeneratedClassLoader(Map<String, byte[]> classes, ClassLoader parent) {
+            super("bip-smc-generated", parent);
+            this.classes = Map.copyOf(classes);
+        }
+
+        @Override
+        protected Class<?> loadClass(String name, boolean resolve) throws ClassNotFoundException {
+            byte[] bytes = classes.get(name);
+            if (bytes == null) {
+                return super.loadClass(name, resolve);
             }
-        };
+            synchronized (getClassLoadingLock(name)) {
+                Class<?> c = findLoadedClass(name);
+                if (c == null) {
+                    c = defineClass(name, bytes, 0, bytes.length);
+                }
+                if (resolve) {
+                    resolveClass(c);
+                }
+                return c;
+            }
+        }
+
+        @Override
+        protected Class<?> findClass(String name) throws ClassNotFoundException {
+            throw new ClassNotFoundException(name);
+        }
     }
 
     private static String location(Class<?> type) {

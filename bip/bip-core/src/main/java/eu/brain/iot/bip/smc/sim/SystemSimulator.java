@@ -43,7 +43,7 @@ public final class SystemSimulator {
     private final long compileNanos;
 
     private SystemSimulator(SystemModel system, List<Query> queries, Engine engine, Supplier<SimulationExterns> externs,
-            List<Path> classpath) throws SimulationException {
+            List<Path> classpath, ClassLoader parent) throws SimulationException {
         this.system = system;
         this.queries = List.copyOf(queries);
         this.engine = engine;
@@ -60,7 +60,7 @@ public final class SystemSimulator {
         }
         this.paramCount = params;
         long start = System.nanoTime();
-        this.driver = engine == Engine.COMPILED ? compile(classpath) : null;
+        this.driver = engine == Engine.COMPILED ? compile(classpath, parent) : null;
         this.compileNanos = System.nanoTime() - start;
     }
 
@@ -70,7 +70,16 @@ public final class SystemSimulator {
      */
     public static SystemSimulator of(SystemModel system, List<Query> queries, Engine engine,
             Supplier<SimulationExterns> externs, List<Path> classpath) throws SimulationException {
-        return new SystemSimulator(system, queries, engine, externs, classpath);
+        return new SystemSimulator(system, queries, engine, externs, classpath, SystemSimulator.class.getClassLoader());
+    }
+
+    /**
+     * As {@link #of(SystemModel, List, Engine, Supplier, List)}, the compiled classes' loader having {@code parent}
+     * (tests: a parent that already holds classes of the same names, as a class path with the deployed jars does).
+     */
+    static SystemSimulator of(SystemModel system, List<Query> queries, Engine engine,
+            Supplier<SimulationExterns> externs, List<Path> classpath, ClassLoader parent) throws SimulationException {
+        return new SystemSimulator(system, queries, engine, externs, classpath, parent);
     }
 
     public Engine engine() {
@@ -134,7 +143,8 @@ public final class SystemSimulator {
         return t;
     }
 
-    private Constructor<? extends SimulatedSystem> compile(List<Path> classpath) throws SimulationException {
+    private Constructor<? extends SimulatedSystem> compile(List<Path> classpath, ClassLoader parent)
+            throws SimulationException {
         Diagnostics diagnostics = new Diagnostics();
         SimulationWriter writer = new SimulationWriter(system, diagnostics);
         List<JavaFile> files = new ArrayList<>(writer.atomFiles());
@@ -155,7 +165,7 @@ public final class SystemSimulator {
             throw new SimulationException(s.toString());
         }
         try {
-            ClassLoader loader = RuntimeCompiler.compile(files, classpath);
+            ClassLoader loader = RuntimeCompiler.compile(files, classpath, parent);
             Class<? extends SimulatedSystem> type = loader.loadClass(driverFile.qualifiedName())
                     .asSubclass(SimulatedSystem.class);
             return type.getConstructor(SimulationExterns.class, double[].class);
