@@ -66,6 +66,17 @@ final class RecordingBus implements EventBus {
         throw new UnsupportedOperationException("the generated behaviours publish typed events");
     }
 
+    @Override
+    public boolean tryDeliver(BrainIoTEvent event) {
+        deliver(event); // its queues have no bound: there is always room
+        return true;
+    }
+
+    @Override
+    public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
+        throw new UnsupportedOperationException("the generated behaviours publish typed events");
+    }
+
     /** Delivers one queued event (in order: to every behaviour). @return false when nothing is queued */
     boolean deliverOne() {
         if (random == null) {
