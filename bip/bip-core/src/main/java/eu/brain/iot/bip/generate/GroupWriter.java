@@ -225,11 +225,10 @@ final class GroupWriter {
         c.close().blank();
         c.line("/** @return the marked places of a component of a group (null or \"\": the default), or null if there is none */");
         c.open("public synchronized java.util.List<String> placesOf(String group, String component)");
-        c.line("int i = index(component);");
-        c.line("Group g = groups.get(group == null ? \"\" : group);");
-        c.open("if (i < 0 || g == null)").line("return null;").close();
+        c.line(names.atomClass() + " a = atom(group, component);");
+        c.open("if (a == null)").line("return null;").close();
         c.line("java.util.List<String> places = new java.util.ArrayList<>();");
-        c.line("g.atoms[i].marking().forEach(x -> places.add(x.name()));");
+        c.line("a.marking().forEach(x -> places.add(x.name()));");
         c.line("return places;");
         c.close().blank();
         c.line("/** @return the data of a component of the default group by name, or null if it is not hosted here */");
@@ -238,18 +237,18 @@ final class GroupWriter {
         c.close().blank();
         c.line("/** @return the data of a component of a group (null or \"\": the default) by name, or null if there is none */");
         c.open("public synchronized java.util.Map<String, Object> dataOf(String group, String component)");
-        c.line("int i = index(component);");
+        c.line(names.atomClass() + " a = atom(group, component);");
+        c.line("return a == null ? null : a.data();");
+        c.close().blank();
+        c.open("private " + names.atomClass() + " atom(String group, String component)");
         c.line("Group g = groups.get(group == null ? \"\" : group);");
-        c.line("return i < 0 || g == null ? null : g.atoms[i].data();");
+        c.open("for (int i = 0; g != null && i < COMPONENTS.length; i++)");
+        c.open("if (COMPONENTS[i].equals(component))").line("return g.atoms[i];").close().close();
+        c.line("return null;");
         c.close().blank();
         c.line("/** @return the groups this behaviour hosts, in creation order; \"\" is the default group */");
         c.open("public synchronized java.util.List<String> groups()");
         c.line("return new java.util.ArrayList<>(groups.keySet());");
-        c.close().blank();
-        c.open("private static int index(String component)");
-        c.open("for (int i = 0; i < COMPONENTS.length; i++)");
-        c.open("if (COMPONENTS[i].equals(component))").line("return i;").close().close();
-        c.line("return -1;");
         c.close();
     }
 
