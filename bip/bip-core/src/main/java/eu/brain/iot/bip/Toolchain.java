@@ -17,6 +17,7 @@ public final class Toolchain {
 
     private final Workspace workspace;
     private boolean checked;
+    private Generator generator;
 
     private Toolchain(Workspace workspace) {
         this.workspace = workspace;
@@ -57,8 +58,26 @@ public final class Toolchain {
         if (!checked) {
             Checker.check(workspace);
             checked = true;
+            hideWhatFollowsFromMissingPackages();
         }
         return !diagnostics().hasErrors();
+    }
+
+    /**
+     * A package that is not found makes every name it declares unknown in the packages that use it: one error
+     * ("package Warehouse not found: add -I ...") says it all, so the unresolved names of those packages are hidden
+     * (counted in {@link Diagnostics#hiddenCount()}, still failing the run).
+     */
+    private void hideWhatFollowsFromMissingPackages() {
+        java.util.Set<String> affected = workspace.packagesMissingUses();
+        if (affected.isEmpty()) {
+            return;
+        }
+        java.util.Set<String> files = new java.util.HashSet<>();
+        for (String name : affected) {
+            workspace.get(name).ifPresent(p -> files.add(p.pos().file()));
+        }
+        diagnostics().hideConsequences(d -> files.contains(d.pos().file()) && d.message().startsWith("unknown "));
     }
 
     /** Checks, then generates the Java for the own packages in memory (nothing when there are errors). */
@@ -74,7 +93,18 @@ public final class Toolchain {
         if (!check()) {
             return List.of();
         }
-        return new Generator(workspace, root, strictBus).generate();
+        generator = new Generator(workspace, root, strictBus);
+        return generator.generate();
+    }
+
+    /** @return what the last generation wrote and did not write, and why (one line each; empty before or on errors) */
+    public List<String> summary() {
+        return generator == null ? List.of() : generator.summary();
+    }
+
+    /** @return the own atom types the last generation wrote no behaviour for, as no root compound instantiates them */
+    public List<String> atomsWithoutRoot() {
+        return generator == null ? List.of() : generator.atomsWithoutRoot();
     }
 
     /** Checks, then writes the Java under {@code output}; @return the number of files written */

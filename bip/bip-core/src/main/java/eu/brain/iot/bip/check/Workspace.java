@@ -26,6 +26,7 @@ public final class Workspace {
     private final List<String> own = new ArrayList<>();
     private final List<Path> modelPath;
     private final Diagnostics diagnostics;
+    private final java.util.Set<String> missing = new java.util.LinkedHashSet<>();
 
     public Workspace(List<Path> modelPath, Diagnostics diagnostics) {
         this.modelPath = List.copyOf(modelPath);
@@ -85,9 +86,13 @@ public final class Workspace {
                 }
                 Optional<Path> file = find(use.packageName());
                 if (file.isEmpty()) {
-                    diagnostics.error(use.pos(), "package " + use.packageName() + " not found: no "
-                            + use.packageName() + ".bip in the model path " + modelPath
-                            + " (give its directory with -I / <modelPath>, or name its file)");
+                    // reported once, at its first use; what follows from it is hidden (see Toolchain.check)
+                    if (missing.add(use.packageName())) {
+                        String last = use.packageName().substring(use.packageName().lastIndexOf('.') + 1);
+                        diagnostics.error(use.pos(), "package " + use.packageName() + " not found: add -I <folder "
+                                + "holding " + last + ".bip> (Maven: a <modelPath> entry), or name its file; the "
+                                + "model path is " + modelPath);
+                    }
                     continue;
                 }
                 try {
@@ -120,6 +125,27 @@ public final class Workspace {
             }
         }
         return Optional.empty();
+    }
+
+    /** @return the packages some {@code use} names that are in no file given or found, in order of first use */
+    public java.util.Set<String> missingPackages() {
+        return java.util.Collections.unmodifiableSet(missing);
+    }
+
+    /** @return the loaded packages that use a missing package, directly or through other loaded packages */
+    public java.util.Set<String> packagesMissingUses() {
+        java.util.Set<String> affected = new java.util.LinkedHashSet<>();
+        boolean grew = !missing.isEmpty();
+        while (grew) {
+            grew = false;
+            for (BipPackage p : packages.values()) {
+                if (!affected.contains(p.name()) && p.uses().stream()
+                        .anyMatch(u -> missing.contains(u.packageName()) || affected.contains(u.packageName()))) {
+                    grew = affected.add(p.name());
+                }
+            }
+        }
+        return affected;
     }
 
     public Optional<BipPackage> get(String name) {

@@ -119,7 +119,9 @@ public final class Main {
                 int written = tool.generate(output, root, strict);
                 code = report(diagnostics, err);
                 if (code == 0) {
-                    out.println("bip: wrote " + written + " Java file(s) to " + output);
+                    out.println("bip: wrote " + written + " Java file(s) to " + output + ":");
+                    tool.summary().forEach(line -> out.println("  " + line));
+                    RootHint.lines(tool.atomsWithoutRoot(), includes).forEach(line -> out.println("  " + line));
                 }
             }
             case "print" -> {
@@ -142,7 +144,8 @@ public final class Main {
         }
         if (diagnostics.hasErrors()) {
             err.println("bip: " + diagnostics.errorCount() + " error(s), " + diagnostics.warningCount()
-                    + " warning(s)");
+                    + " warning(s)" + (diagnostics.hiddenCount() == 0 ? "" : " (and " + diagnostics.hiddenCount()
+                            + " unknown name(s) in packages that use a package not found, not shown)"));
             return 1;
         }
         return 0;

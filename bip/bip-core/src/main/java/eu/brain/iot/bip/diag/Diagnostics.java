@@ -13,6 +13,8 @@ import eu.brain.iot.bip.model.Pos;
 public final class Diagnostics {
 
     private final List<Diagnostic> all = new ArrayList<>();
+    /** Errors that follow from another one (e.g. names of a package that was not found): counted, not shown. */
+    private final List<Diagnostic> hidden = new ArrayList<>();
 
     public void error(Pos pos, String message) {
         all.add(new Diagnostic(Diagnostic.Severity.ERROR, pos, message));
@@ -23,11 +25,29 @@ public final class Diagnostics {
     }
 
     public boolean hasErrors() {
-        return all.stream().anyMatch(Diagnostic::isError);
+        return !hidden.isEmpty() || all.stream().anyMatch(Diagnostic::isError);
     }
 
+    /** @return the errors shown (not those hidden as consequences of another) */
     public long errorCount() {
         return all.stream().filter(Diagnostic::isError).count();
+    }
+
+    /**
+     * Hides the errors that follow from another error already reported (they still make the run fail).
+     *
+     * @return how many were hidden
+     */
+    public int hideConsequences(java.util.function.Predicate<Diagnostic> followsFromAnother) {
+        List<Diagnostic> consequences = all.stream().filter(d -> d.isError() && followsFromAnother.test(d)).toList();
+        all.removeAll(consequences);
+        hidden.addAll(consequences);
+        return consequences.size();
+    }
+
+    /** @return how many errors were hidden as consequences of others */
+    public int hiddenCount() {
+        return hidden.size();
     }
 
     public long warningCount() {

@@ -6,19 +6,9 @@ import java.util.List;
 import java.util.Set;
 import java.util.stream.Collectors;
 
-import eu.brain.iot.bip.check.ConstantFolder;
-import eu.brain.iot.bip.check.ExprTyper;
-import eu.brain.iot.bip.check.Interactions;
-import eu.brain.iot.bip.check.LocalNames;
 import eu.brain.iot.bip.check.PackageScope;
-import eu.brain.iot.bip.check.ResolvedCall;
-import eu.brain.iot.bip.check.Symbol;
-import eu.brain.iot.bip.check.Type;
 import eu.brain.iot.bip.diag.Diagnostics;
 import eu.brain.iot.bip.model.AtomType;
-import eu.brain.iot.bip.model.ConnectorType;
-import eu.brain.iot.bip.model.DataDecl;
-import eu.brain.iot.bip.model.Expr;
 import eu.brain.iot.bip.model.Param;
 import eu.brain.iot.bip.model.PortDecl;
 import eu.brain.iot.bip.model.PortType;
@@ -27,7 +17,8 @@ import eu.brain.iot.bip.system.SystemModel.AtomInstance;
 /**
  * Writes the OSGi smart behaviour of one atom type: a Declarative Services component that hosts the type's
  * instances in the root compound, consumes the events of its ports ({@code @SmartBehaviourDefinition(consumed)}),
- * and runs the bus protocol of {@link BusPlan}. All its state is guarded by the component's monitor.
+ * and runs the bus protocol of {@link BusPlan} once per group (see {@link GroupWriter}). All its state is guarded by
+ * the component's monitor.
  */
 final class BehaviourWriter {
 
@@ -84,9 +75,14 @@ final class BehaviourWriter {
                 + instances.stream().map(AtomInstance::path).toList() + " of compound {@code "
                 + plan.system().root().name() + "}; generated: do not edit.");
         c.line(" * <p>");
+        c.line(" * The root compound is replicated per group: each group named by an event's {@code group} field (null or");
+        c.line(" * empty: the default group, created at activation) has its own instances, created when an event first");
+        c.line(" * names it, up to {@code max.groups}; groups never interact. See {@link #groups()}.");
+        c.line(" * <p>");
         c.line(" * Owner of all state: this component's monitor ({@code notify} and every helper run under it), so it");
         c.line(" * stays consistent even if the bus called {@code notify} from several threads.");
-        c.line(" * Configuration (optional, PID = this class's name): {@code trace=true} publishes TransitionFired events.");
+        c.line(" * Configuration (optional, PID = this class's name, see {@link Config}): {@code trace=true} publishes");
+        c.line(" * TransitionFired events; {@code max.groups} bounds the number of groups (default " + GroupWriter.MAX_GROUPS + ").");
         c.line(" */");
         c.line("@javax.annotation.processing.Generated(\"eu.brain.iot.bip\")");
         c.line("@org.osgi.service.component.annotations.Component(service = eu.brain.iot.eventing.api.SmartBehaviour.class,");
@@ -115,24 +111,11 @@ final class BehaviourWriter {
             }
         }
         c.blank();
-        c.line("private final eu.brain.iot.eventing.api.EventBus bus;");
-        c.line("private final boolean trace;");
-        if (names.hasExterns()) {
-            c.line("private final " + names.externs() + " bipExterns;");
-        }
-        c.line("/** The atom instances, by index into COMPONENTS. */");
-        c.line("private final " + atomClass + "[] atoms;");
-        c.line("/** Per instance: the connector it offered to and now waits for, or null. */");
-        c.line("private final String[] waiting;");
-        for (BusPlan.PortPlan p : ports) {
-            if (p.has(BusPlan.Role.COORDINATOR)) {
-                c.line("/** Per instance and port parameter: the offers collected for port " + p.port().name() + ". */");
-                c.line("private final " + events.offerClass(p.connector()) + "[][] offers" + suffix(p) + ";");
-                c.line("private final int[] rotation" + suffix(p) + ";");
-            }
-        }
+        GroupWriter groups = new GroupWriter(this, atom, names, instances, ports);
+        groups.fields(c, cls);
         c.blank();
-        constructor(c, cls);
+        groups.constructors(c, cls);
+        groups.lookup(c);
         notifyMethod(c);
         run(c);
         for (BusPlan.PortPlan p : ports) {
@@ -156,69 +139,9 @@ final class BehaviourWriter {
             }
         }
         helpers(c);
+        groups.views(c);
         c.close();
         return c.toString();
-    }
-
-    private void constructor(Code c, String cls) {
-        c.line("/**");
-        c.line(" * Creates the instances and runs their initial transitions, then whatever they can do on their own.");
-        c.line(" *");
-        c.line(" * @param bus the event bus");
-        if (names.hasExterns()) {
-            c.line(" * @param externs the hand-written extern functions");
-        }
-        c.line(" * @param config component properties; {@code trace} (boolean) publishes TransitionFired events");
-        c.line(" */");
-        c.line("@org.osgi.service.component.annotations.Activate");
-        c.open("public " + cls + "(@org.osgi.service.component.annotations.Reference eu.brain.iot.eventing.api.EventBus bus,"
-                + (names.hasExterns() ? " @org.osgi.service.component.annotations.Reference " + names.externs() + " externs," : "")
-                + " java.util.Map<String, Object> config)");
-        c.line("this.bus = java.util.Objects.requireNonNull(bus, \"bus\");");
-        c.line("this.trace = Boolean.parseBoolean(String.valueOf(config.getOrDefault(\"trace\", \"false\")));");
-        if (names.hasExterns()) {
-            c.line("this.bipExterns = java.util.Objects.requireNonNull(externs, \"externs\");");
-        }
-        c.line("this.waiting = new String[COMPONENTS.length];");
-        for (BusPlan.PortPlan p : ports) {
-            if (p.has(BusPlan.Role.COORDINATOR)) {
-                c.line("this.offers" + suffix(p) + " = new " + events.offerClass(p.connector()) + "[COMPONENTS.length]["
-                        + p.connector().ports().size() + "];");
-                c.line("this.rotation" + suffix(p) + " = new int[COMPONENTS.length];");
-            }
-        }
-        c.open("synchronized (this)");
-        List<String> created = new ArrayList<>();
-        for (AtomInstance a : instances) {
-            List<String> args = new ArrayList<>();
-            if (names.hasExterns()) {
-                args.add("externs");
-            }
-            for (int i = 0; i < atom.params().size(); i++) {
-                args.add(literal(i < a.args().size() ? a.args().get(i) : null, atom.params().get(i).type().name()));
-            }
-            created.add("new " + atomClass + "(" + String.join(", ", args) + ")");
-        }
-        c.line("this.atoms = new " + atomClass + "[] {" + String.join(", ", created) + "};");
-        c.open("for (int i = 0; i < atoms.length; i++)");
-        c.open("if (trace)").line("publishTrace(i, \"initial\", java.util.EnumSet.noneOf(" + atomClass + ".Place.class));")
-                .close();
-        c.line("run(i);").close();
-        c.close().close().blank();
-    }
-
-    private String literal(Object value, String bipType) {
-        Type t = atomScope.resolveType(bipType);
-        if (value == null) {
-            return JavaNames.defaultLiteral(t);
-        }
-        if (value instanceof String s) {
-            return JavaNames.literal(s);
-        }
-        if (t != null && t.kind() == Type.Kind.FLOAT && value instanceof Integer i) {
-            return i + ".0";
-        }
-        return value.toString();
     }
 
     private void notifyMethod(Code c) {
@@ -249,7 +172,10 @@ final class BehaviourWriter {
                 c.middle("} else if (event instanceof " + type + ") {");
             }
             c.line(type + " e = (" + type + ") event;");
-            h.getValue().forEach(m -> c.line(m + "(e);"));
+            c.line("Group g = group(e.group);");
+            c.open("if (g != null)");
+            h.getValue().forEach(m -> c.line(m + "(g, e);"));
+            c.close();
             first = false;
         }
         if (first) {
@@ -264,14 +190,15 @@ final class BehaviourWriter {
 
     private void run(Code c) {
         c.line("/** Lets instance i take the transitions it can take on its own: internal ones first, then its ports. */");
-        c.open("private void run(int i)");
-        c.line(atomClass + " a = atoms[i];");
+        c.open("private void run(Group g, int i)");
+        c.line(atomClass + " a = g.atoms[i];");
         c.open("for (int step = 0; step < MAX_STEPS; step++)");
-        c.open("if (waiting[i] != null)").line("return;").close();
+        c.open("if (g.waiting[i] != null)").line("return;").close();
+        c.line("enter(g, i);");
         c.line("java.util.EnumSet<" + atomClass + ".Place> before = trace ? a.marking() : null;");
         c.open("if (a.internalStep())");
-        c.open("if (trace)").line("publishTrace(i, \"internal\", before);").close();
-        c.line("checkInvariants(i, \"internal\");");
+        c.open("if (trace)").line("publishTrace(g, i, \"internal\", before);").close();
+        c.line("checkInvariants(g, i, \"internal\");");
         c.line("continue;").close();
         c.line("boolean acted = false;");
         c.open("for (" + atomClass + ".Port p : a.enabledPorts())");
@@ -279,12 +206,12 @@ final class BehaviourWriter {
         for (BusPlan.PortPlan p : ports) {
             String id = JavaNames.id(p.port().name());
             if (p.role() == BusPlan.Role.LOCAL) {
-                c.line("case " + id + ": acted = fire(i, p); break;");
+                c.line("case " + id + ": acted = fire(g, i, p); break;");
             } else if (p.role() == BusPlan.Role.EXTERNAL && policy(p) == PortDecl.Policy.REMEMBER) {
-                c.line("case " + id + ": acted = replay" + suffix(p) + "(i); break;");
+                c.line("case " + id + ": acted = replay" + suffix(p) + "(g, i); break;");
             } else if (p.role() == BusPlan.Role.BOUND && (p.has(BusPlan.Role.INITIATOR) || p.has(BusPlan.Role.PARTICIPANT)
                     || p.has(BusPlan.Role.COORDINATOR))) {
-                c.line("case " + id + ": acted = act" + suffix(p) + "(i); break;");
+                c.line("case " + id + ": acted = act" + suffix(p) + "(g, i); break;");
             }
         }
         c.line("default: break;");
@@ -294,7 +221,7 @@ final class BehaviourWriter {
         c.open("if (!acted)").line("return;").close();
         c.close();
         c.line("LOG.log(System.Logger.Level.WARNING, \"{0} took {1} transitions in a row without waiting for an event; "
-                + "it pauses until the next event\", COMPONENTS[i], MAX_STEPS);");
+                + "it pauses until the next event\", g.who(i), MAX_STEPS);");
         c.close().blank();
     }
 
@@ -303,7 +230,7 @@ final class BehaviourWriter {
         PortType pt = atomScope.portType(p.portType()).orElseThrow();
         for (int k = 0; k < pt.params().size(); k++) {
             if (pt.params().get(k).name().equals(var)) {
-                return "atoms[i]." + AtomWriter.field(p.boundData().get(k));
+                return "g.atoms[i]." + AtomWriter.field(p.boundData().get(k));
             }
         }
         throw new IllegalStateException("no variable " + var + " in port type " + pt.name());
@@ -316,42 +243,40 @@ final class BehaviourWriter {
     private void external(Code c, BusPlan.PortPlan p) {
         String type = events.externalClass(atom, p.port().name());
         c.line("/** Port " + p.port().name() + " fired from outside: see {@link " + type + "}. */");
-        c.open("private void on" + suffix(p) + "(" + type + " e)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
+        c.open("private void on" + suffix(p) + "(Group g, " + type + " e)");
+        c.open("for (int i = 0; i < g.atoms.length; i++)");
         c.open("if (e.component != null && !e.component.isEmpty() && !e.component.equals(COMPONENTS[i]))")
                 .line("continue;").close();
-        c.open("if (waiting[i] != null || !atoms[i].enabledPorts().contains(" + port(p) + "))");
+        c.line("enter(g, i);");
+        c.open("if (g.waiting[i] != null || !g.atoms[i].enabledPorts().contains(" + port(p) + "))");
         switch (policy(p)) {
             case REMEMBER -> {
                 c.line("// extern port, policy remember: kept until the port is enabled (run takes it then)");
-                c.line("pending" + suffix(p) + "(i).add(e);");
+                c.line("pending" + suffix(p) + "(g, i).add(e);");
             }
             case ERROR -> c.line("LOG.log(System.Logger.Level.ERROR, \"{0}: extern port " + p.port().name()
-                    + " cannot take an event now (policy error): event dropped\", COMPONENTS[i]);");
+                    + " cannot take an event now (policy error): event dropped\", g.who(i));");
             default -> c.line("LOG.log(System.Logger.Level.DEBUG, \"{0}: port " + p.port().name()
-                    + " is not enabled, event ignored\", COMPONENTS[i]);");
+                    + " is not enabled, event ignored\", g.who(i));");
         }
         c.line("continue;").close();
-        c.line("take" + suffix(p) + "(i, e);");
-        c.line("run(i);");
+        c.line("take" + suffix(p) + "(g, i, e);");
+        c.line("run(g, i);");
         c.close().close().blank();
-        c.open("private boolean take" + suffix(p) + "(int i, " + type + " e)");
+        c.open("private boolean take" + suffix(p) + "(Group g, int i, " + type + " e)");
         for (Param v : portVars(p.port())) {
             c.line(boundField(p.port(), v.name()) + " = e." + EventsWriter.externalField(v.name()) + ";");
         }
-        c.line("return fire(i, " + port(p) + ");");
+        c.line("return fire(g, i, " + port(p) + ");");
         c.close().blank();
         if (policy(p) == PortDecl.Policy.REMEMBER) {
             String queue = "java.util.ArrayDeque<" + type + ">";
-            c.line("/** Per instance: events for extern port " + p.port().name() + " that came before it was enabled. */");
-            c.line("private final java.util.Map<Integer, " + queue + "> pending" + suffix(p)
-                    + "Queues = new java.util.HashMap<>();");
-            c.open("private " + queue + " pending" + suffix(p) + "(int i)");
-            c.line("return pending" + suffix(p) + "Queues.computeIfAbsent(i, k -> new java.util.ArrayDeque<>());");
+            c.open("private " + queue + " pending" + suffix(p) + "(Group g, int i)");
+            c.line("return g.pending" + suffix(p) + "Queues.computeIfAbsent(i, k -> new java.util.ArrayDeque<>());");
             c.close().blank();
-            c.open("private boolean replay" + suffix(p) + "(int i)");
-            c.line(type + " e = pending" + suffix(p) + "(i).poll();");
-            c.line("return e != null && take" + suffix(p) + "(i, e);");
+            c.open("private boolean replay" + suffix(p) + "(Group g, int i)");
+            c.line(type + " e = pending" + suffix(p) + "(g, i).poll();");
+            c.line("return e != null && take" + suffix(p) + "(g, i, e);");
             c.close().blank();
         }
     }
@@ -378,16 +303,16 @@ final class BehaviourWriter {
             return;
         }
         c.line("/** Port " + p.port().name() + " is enabled: what instance i does depends on its part in the connector. */");
-        c.open("private boolean act" + suffix(p) + "(int i)");
+        c.open("private boolean act" + suffix(p) + "(Group g, int i)");
         c.open("switch (ROLE_" + suffix(p) + "[i])");
         if (p.has(BusPlan.Role.INITIATOR)) {
-            c.line("case " + roleCode(BusPlan.Role.INITIATOR) + ": return initiate" + suffix(p) + "(i);");
+            c.line("case " + roleCode(BusPlan.Role.INITIATOR) + ": return initiate" + suffix(p) + "(g, i);");
         }
         if (p.has(BusPlan.Role.PARTICIPANT)) {
-            c.line("case " + roleCode(BusPlan.Role.PARTICIPANT) + ": return offer" + suffix(p) + "(i);");
+            c.line("case " + roleCode(BusPlan.Role.PARTICIPANT) + ": return offer" + suffix(p) + "(g, i);");
         }
         if (p.has(BusPlan.Role.COORDINATOR)) {
-            c.line("case " + roleCode(BusPlan.Role.COORDINATOR) + ": return coordinate" + suffix(p) + "(i);");
+            c.line("case " + roleCode(BusPlan.Role.COORDINATOR) + ": return coordinate" + suffix(p) + "(g, i);");
         }
         c.line("default: return false;");
         c.close().close().blank();
@@ -395,46 +320,33 @@ final class BehaviourWriter {
 
     private void helpers(Code c) {
         c.line("/** Fires a port transition of instance i (tracing it when configured). */");
-        c.open("private boolean fire(int i, " + atomClass + ".Port port)");
-        c.line("java.util.EnumSet<" + atomClass + ".Place> before = trace ? atoms[i].marking() : null;");
-        c.open("if (!atoms[i].fire(port))");
-        c.line("LOG.log(System.Logger.Level.WARNING, \"{0}: port {1} is not enabled\", COMPONENTS[i], port);");
+        c.open("private boolean fire(Group g, int i, " + atomClass + ".Port port)");
+        c.line("enter(g, i);");
+        c.line("java.util.EnumSet<" + atomClass + ".Place> before = trace ? g.atoms[i].marking() : null;");
+        c.open("if (!g.atoms[i].fire(port))");
+        c.line("LOG.log(System.Logger.Level.WARNING, \"{0}: port {1} is not enabled\", g.who(i), port);");
         c.line("return false;").close();
-        c.open("if (trace)").line("publishTrace(i, port.name(), before);").close();
-        c.line("checkInvariants(i, port.name());");
+        c.open("if (trace)").line("publishTrace(g, i, port.name(), before);").close();
+        c.line("checkInvariants(g, i, port.name());");
         c.line("return true;");
         c.close().blank();
         c.line("/** A violated invariant is an error of the model: logged, the behaviour goes on. */");
-        c.open("private void checkInvariants(int i, String transition)");
-        c.open("for (String invariant : atoms[i].violatedInvariants())");
-        c.line("LOG.log(System.Logger.Level.ERROR, \"{0}: invariant {1} does not hold after {2}\", COMPONENTS[i], "
+        c.open("private void checkInvariants(Group g, int i, String transition)");
+        c.open("for (String invariant : g.atoms[i].violatedInvariants())");
+        c.line("LOG.log(System.Logger.Level.ERROR, \"{0}: invariant {1} does not hold after {2}\", g.who(i), "
                 + "invariant, transition);");
         c.close().close().blank();
         String trace = events.traceClass();
-        c.open("private void publishTrace(int i, String port, java.util.EnumSet<" + atomClass + ".Place> before)");
+        c.open("private void publishTrace(Group g, int i, String port, java.util.EnumSet<" + atomClass + ".Place> before)");
         c.line(trace + " t = new " + trace + "();");
+        c.line("t.group = g.wire;");
         c.line("t.component = COMPONENTS[i];");
         c.line("t.atomType = " + JavaNames.literal(atom.name()) + ";");
         c.line("t.port = port;");
         c.line("before.forEach(x -> t.from.add(x.name()));");
-        c.line("atoms[i].marking().forEach(x -> t.to.add(x.name()));");
+        c.line("g.atoms[i].marking().forEach(x -> t.to.add(x.name()));");
         c.line("bus.deliver(t);");
         c.close().blank();
-        c.line("/** @return the marked places of a component, e.g. [START], or null if it is not hosted here */");
-        c.open("public synchronized java.util.List<String> placesOf(String component)");
-        c.open("for (int i = 0; i < COMPONENTS.length; i++)");
-        c.open("if (COMPONENTS[i].equals(component))");
-        c.line("java.util.List<String> places = new java.util.ArrayList<>();");
-        c.line("atoms[i].marking().forEach(x -> places.add(x.name()));");
-        c.line("return places;").close().close();
-        c.line("return null;");
-        c.close().blank();
-        c.line("/** @return the data of a component by name, or null if it is not hosted here */");
-        c.open("public synchronized java.util.Map<String, Object> dataOf(String component)");
-        c.open("for (int i = 0; i < COMPONENTS.length; i++)");
-        c.open("if (COMPONENTS[i].equals(component))").line("return atoms[i].data();").close().close();
-        c.line("return null;");
-        c.close();
     }
 
 }

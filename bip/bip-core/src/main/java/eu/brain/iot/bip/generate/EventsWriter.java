@@ -22,7 +22,7 @@ import eu.brain.iot.bip.system.SystemModel.ConnectorInstance;
  */
 final class EventsWriter {
 
-    static final Set<String> RESERVED = Set.of("connector", "initiator", "participants", "port", "component",
+    static final Set<String> RESERVED = Set.of("connector", "initiator", "participants", "port", "component", "group",
             "sourceNode", "timestamp", "securityToken");
 
     private final BusPlan plan;
@@ -136,6 +136,7 @@ final class EventsWriter {
                         + "Each participant reads the data of its own port parameter (after the 'down' transfer).", name);
         c.line("/** The connector instance, e.g. {@code Connector2}. */");
         c.line("public String connector;");
+        group(c);
         if (offer) {
             c.line("/** The port parameter of the offering component, e.g. {@code p1}. */");
             c.line("public String port;");
@@ -169,6 +170,12 @@ final class EventsWriter {
         return new JavaFile(javaPackage, name, c.toString());
     }
 
+    /** The group field every generated event has (see bip/README.md, "Groups"). */
+    private static void group(Code c) {
+        c.line("/** The group (copy of the root compound) the event belongs to; null or empty: the default group. */");
+        c.line("public String group;");
+    }
+
     private JavaFile externalEvent(AtomType atom, BusPlan.PortPlan pp, PackageScope atomScope) {
         String name = simple(externalClass(atom, pp.port().name()));
         PortType pt = atomScope.portType(pp.port().portType()).orElseThrow();
@@ -176,6 +183,7 @@ final class EventsWriter {
         Code c = header("Fires port {@code " + pp.port().name() + "} of atom type {@code " + atom.name()
                 + "} from outside the model (no connector binds it):\nwhen the port is enabled, its data takes these "
                 + "values and its transition fires; otherwise the event is ignored.", name);
+        group(c);
         c.line("/** The component instance, e.g. {@code Robot1}; null or empty for every instance. */");
         c.line("public String component;");
         for (Param v : pt.params()) {
@@ -190,6 +198,7 @@ final class EventsWriter {
     private JavaFile trace() {
         Code c = header("A transition fired in a generated behaviour; published only when the behaviour's\n"
                 + "configuration sets {@code trace=true}.", "TransitionFired");
+        group(c);
         c.line("/** The component instance, e.g. {@code Robot1}. */");
         c.line("public String component;");
         c.line("/** Its atom type, e.g. {@code Robot_behavior}. */");

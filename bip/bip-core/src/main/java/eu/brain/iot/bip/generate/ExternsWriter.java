@@ -45,6 +45,17 @@ final class ExternsWriter {
         c.line(" */");
         c.line("@javax.annotation.processing.Generated(\"eu.brain.iot.bip\")");
         c.open("public interface " + name);
+        c.blank();
+        c.line("/**");
+        c.line(" * Called by the generated behaviour before the calls it makes for one instance (its initial transition,");
+        c.line(" * guards, actions, connector code): the group (\"\" for the default one) and the component, e.g. Robot1;");
+        c.line(" * the atom's own parameters are the same in every group. Does nothing unless overridden.");
+        c.line(" *");
+        c.line(" * @param group the group of the instance");
+        c.line(" * @param component the component instance in the root compound");
+        c.line(" */");
+        c.open("default void bipInstance(String group, String component)");
+        c.close();
         for (ResolvedCall call : calls) {
             List<String> params = new ArrayList<>();
             for (int i = 0; i < call.params().size(); i++) {

@@ -26,6 +26,10 @@ public final class Generator {
     private final String rootName;
     private final Diagnostics diagnostics;
     private final boolean strictBus;
+    /** What the last {@link #generate()} wrote and did not write, and why: one line each, for the user. */
+    private final List<String> summary = new ArrayList<>();
+    /** The own atom types that got no behaviour because no root compound instantiates them. */
+    private final List<String> withoutRoot = new ArrayList<>();
 
     /** Lenient: a system that cannot be realised on the bus still gets its atom classes (see below). */
     public Generator(Workspace workspace, String rootName) {
@@ -76,7 +80,20 @@ public final class Generator {
                     files.add(new JavaFile(javaPackage, n.externs(),
                             ExternsWriter.write(javaPackage, n.externs(), atom, calls, scope)));
                 }
+                summary.add(atom.name() + ": " + javaPackage + "." + n.atomClass() + " (atom class)" + (n.hasExterns()
+                        ? ", " + n.externs() + " (its extern functions: implement this interface)"
+                        : "; it calls no extern function, so no extern interface"));
             }
+        }
+        if (plan == null && !diagnostics.hasErrors()) {
+            for (BipPackage pkg : workspace.ownPackages()) {
+                for (AtomType atom : pkg.atomTypes()) {
+                    withoutRoot.add(atom.name());
+                    summary.add("no behaviour class for " + atom.name() + ": no root compound instantiates it (the "
+                            + "files given declare no compound type and --root names none)");
+                }
+            }
+            summary.add("no event types: they are generated with the root compound");
         }
         if (plan != null && !diagnostics.hasErrors()) {
             List<JavaFile> busFiles = busFiles(plan, system.get(), names, bus);
@@ -87,9 +104,52 @@ public final class Generator {
                     diagnostics.warning(d.pos(), d.message() + " (so no smart behaviour or event type is generated "
                             + "for compound " + system.get().root().name() + "; the atom classes are)");
                 }
+                summary.add("no behaviour class or event type: compound " + system.get().root().name() + " cannot "
+                        + "run on the event bus (see the warnings; --strict makes them errors)");
             }
         }
-        return diagnostics.hasErrors() ? List.of() : files;
+        if (diagnostics.hasErrors()) {
+            summary.clear();
+            withoutRoot.clear();
+            return List.of();
+        }
+        return files;
+    }
+
+    /** @return what the last {@link #generate()} wrote and did not write, and why (one line each) */
+    public List<String> summary() {
+        return List.copyOf(summary);
+    }
+
+    /** @return the names of the own atom types that got no behaviour class because no root compound instantiates them */
+    public List<String> atomsWithoutRoot() {
+        return List.copyOf(withoutRoot);
+    }
+
+    private void summariseBus(BusPlan plan, SystemModel system, List<JavaFile> eventFiles) {
+        String root = system.rootPackage().name() + "." + system.root().name();
+        for (BipPackage pkg : workspace.ownPackages()) {
+            for (AtomType atom : pkg.atomTypes()) {
+                List<String> paths = plan.instances(atom).stream().map(a -> a.path()).toList();
+                if (paths.isEmpty()) {
+                    withoutRoot.add(atom.name());
+                    summary.add("no behaviour class for " + atom.name() + ": root compound " + root
+                            + " does not instantiate it");
+                } else {
+                    summary.add(atom.name() + ": " + JavaNames.javaPackage(pkg) + "." + JavaNames.type(atom.name())
+                            + "Behaviour (smart behaviour hosting " + String.join(", ", paths) + " of " + root
+                            + ", one copy per group)");
+                }
+            }
+        }
+        if (workspace.isOwn(system.rootPackage().name())) {
+            summary.add(eventFiles.size() + " event type(s) of " + root + " in Java package "
+                    + JavaNames.javaPackage(system.rootPackage()));
+        } else {
+            summary.add("no event types: they belong to the root compound's package " + system.rootPackage().name()
+                    + ", which is used here, not given; they are written where its file is given (the behaviours "
+                    + "of this run need them on their class path)");
+        }
     }
 
     private List<JavaFile> busFiles(BusPlan plan, SystemModel system, Map<AtomType, AtomNames> names, Diagnostics bus) {
@@ -102,9 +162,8 @@ public final class Generator {
         }
         String eventsPackage = JavaNames.javaPackage(system.rootPackage());
         EventsWriter events = new EventsWriter(plan, eventsPackage);
-        if (workspace.isOwn(system.rootPackage().name())) {
-            files.addAll(events.write(bus));
-        }
+        List<JavaFile> eventFiles = workspace.isOwn(system.rootPackage().name()) ? events.write(bus) : List.of();
+        files.addAll(eventFiles);
         for (BipPackage pkg : workspace.ownPackages()) {
             for (AtomType atom : pkg.atomTypes()) {
                 if (plan.instances(atom).isEmpty()) {
@@ -114,6 +173,9 @@ public final class Generator {
                 String source = new BehaviourWriter(plan, atom, n, events, bus).write();
                 files.add(new JavaFile(n.javaPackage(), n.behaviour(), source));
             }
+        }
+        if (!bus.hasErrors()) {
+            summariseBus(plan, system, eventFiles);
         }
         return files;
     }

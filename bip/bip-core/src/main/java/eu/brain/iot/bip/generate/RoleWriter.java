@@ -26,9 +26,10 @@ final class RoleWriter {
         ConnectorType t = p.connector();
         String type = w.events.eventClass(t);
         c.line("/** Fires trigger port " + p.port().name() + " alone and publishes the interaction. */");
-        c.open("private boolean initiate" + BehaviourWriter.suffix(p) + "(int i)");
+        c.open("private boolean initiate" + BehaviourWriter.suffix(p) + "(Group g, int i)");
         c.open("if (CONNECTOR_" + BehaviourWriter.suffix(p) + "[i] == null)").line("return false;").close();
         c.line(type + " e = new " + type + "();");
+        c.line("e.group = g.wire;");
         c.line("e.connector = CONNECTOR_" + BehaviourWriter.suffix(p) + "[i];");
         c.open("switch (PARAM_" + BehaviourWriter.suffix(p) + "[i])");
         for (int j : distinct(p, BusPlan.Role.INITIATOR)) {
@@ -52,7 +53,7 @@ final class RoleWriter {
         }
         c.line("default: return false;");
         c.close();
-        c.line("fire(i, " + w.port(p) + ");");
+        c.line("fire(g, i, " + w.port(p) + ");");
         c.line("bus.deliver(e);");
         c.line("return true;");
         c.close().blank();
@@ -63,11 +64,13 @@ final class RoleWriter {
         String type = w.events.eventClass(t);
         BusPlan.ConnectorPlan cp = w.plan.plan(t);
         c.line("/** A broadcast of " + t.name() + " arrived: synchron port " + p.port().name() + " joins if ready. */");
-        c.open("private void receive" + BehaviourWriter.suffix(p) + "(" + type + " e)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
+        c.open("private void receive" + BehaviourWriter.suffix(p) + "(Group g, " + type + " e)");
+        c.open("for (int i = 0; i < g.atoms.length; i++)");
         c.open("if (ROLE_" + BehaviourWriter.suffix(p) + "[i] != " + BehaviourWriter.roleCode(BusPlan.Role.RECEIVER) + " || e.connector == null"
-                + " || !e.connector.equals(CONNECTOR_" + BehaviourWriter.suffix(p) + "[i]) || waiting[i] != null"
-                + " || !atoms[i].enabledPorts().contains(" + w.port(p) + "))").line("continue;").close();
+                + " || !e.connector.equals(CONNECTOR_" + BehaviourWriter.suffix(p) + "[i]) || g.waiting[i] != null)")
+                .line("continue;").close();
+        c.line("enter(g, i);");
+        c.open("if (!g.atoms[i].enabledPorts().contains(" + w.port(p) + "))").line("continue;").close();
         c.line("boolean joins = false;");
         c.open("switch (PARAM_" + BehaviourWriter.suffix(p) + "[i])");
         for (int r : distinct(p, BusPlan.Role.RECEIVER)) {
@@ -95,8 +98,8 @@ final class RoleWriter {
         c.line("default: break;");
         c.close();
         c.open("if (joins)");
-        c.line("fire(i, " + w.port(p) + ");");
-        c.line("run(i);");
+        c.line("fire(g, i, " + w.port(p) + ");");
+        c.line("run(g, i);");
         c.close();
         c.close().close().blank();
     }
@@ -121,9 +124,10 @@ final class RoleWriter {
         String offer = w.events.offerClass(t);
         String type = w.events.eventClass(t);
         c.line("/** Port " + p.port().name() + " is ready: offer it to the coordinator of " + t.name() + " and wait. */");
-        c.open("private boolean offer" + BehaviourWriter.suffix(p) + "(int i)");
+        c.open("private boolean offer" + BehaviourWriter.suffix(p) + "(Group g, int i)");
         c.open("if (CONNECTOR_" + BehaviourWriter.suffix(p) + "[i] == null)").line("return false;").close();
         c.line(offer + " o = new " + offer + "();");
+        c.line("o.group = g.wire;");
         c.line("o.connector = CONNECTOR_" + BehaviourWriter.suffix(p) + "[i];");
         c.line("o.component = COMPONENTS[i];");
         c.open("switch (PARAM_" + BehaviourWriter.suffix(p) + "[i])");
@@ -138,15 +142,15 @@ final class RoleWriter {
         }
         c.line("default: return false;");
         c.close();
-        c.line("waiting[i] = o.connector;");
+        c.line("g.waiting[i] = o.connector;");
         c.line("bus.deliver(o);");
         c.line("return true;");
         c.close().blank();
         c.line("/** The coordinator of " + t.name() + " fired: take part if this instance was in the interaction. */");
-        c.open("private void complete" + BehaviourWriter.suffix(p) + "(" + type + " e)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
+        c.open("private void complete" + BehaviourWriter.suffix(p) + "(Group g, " + type + " e)");
+        c.open("for (int i = 0; i < g.atoms.length; i++)");
         c.open("if (ROLE_" + BehaviourWriter.suffix(p) + "[i] != " + BehaviourWriter.roleCode(BusPlan.Role.PARTICIPANT) + " || e.connector == null"
-                + " || !e.connector.equals(waiting[i]) || !e.connector.equals(CONNECTOR_" + BehaviourWriter.suffix(p) + "[i]))")
+                + " || !e.connector.equals(g.waiting[i]) || !e.connector.equals(CONNECTOR_" + BehaviourWriter.suffix(p) + "[i]))")
                 .line("continue;").close();
         c.open("switch (PARAM_" + BehaviourWriter.suffix(p) + "[i])");
         for (int j : distinct(p, BusPlan.Role.PARTICIPANT)) {
@@ -160,9 +164,9 @@ final class RoleWriter {
         }
         c.line("default: continue;");
         c.close();
-        c.line("waiting[i] = null;");
-        c.line("fire(i, " + w.port(p) + ");");
-        c.line("run(i);");
+        c.line("g.waiting[i] = null;");
+        c.line("fire(g, i, " + w.port(p) + ");");
+        c.line("run(g, i);");
         c.close().close().blank();
     }
 
@@ -175,16 +179,16 @@ final class RoleWriter {
         String selfName = t.ports().get(self).name();
         List<Long> candidates = cp.interactions().stream().filter(m -> (m & (1L << self)) != 0).toList();
         c.line("/** An offer for " + t.name() + " arrived: keep it (the latest per port) and see whether to fire. */");
-        c.open("private void collect" + BehaviourWriter.suffix(p) + "(" + offer + " o)");
-        c.open("for (int i = 0; i < atoms.length; i++)");
+        c.open("private void collect" + BehaviourWriter.suffix(p) + "(Group g, " + offer + " o)");
+        c.open("for (int i = 0; i < g.atoms.length; i++)");
         c.open("if (ROLE_" + BehaviourWriter.suffix(p) + "[i] != " + BehaviourWriter.roleCode(BusPlan.Role.COORDINATOR) + " || o.connector == null"
                 + " || !o.connector.equals(CONNECTOR_" + BehaviourWriter.suffix(p) + "[i]))").line("continue;").close();
         c.line("int param = paramIndex" + BehaviourWriter.suffix(p) + "(o.port);");
         c.open("if (param < 0 || param == " + self + ")");
         c.line("LOG.log(System.Logger.Level.WARNING, \"offer for unknown port {0} of {1} ignored\", o.port, o.connector);");
         c.line("continue;").close();
-        c.line("offers" + BehaviourWriter.suffix(p) + "[i][param] = o;");
-        c.line("run(i);");
+        c.line("g.offers" + BehaviourWriter.suffix(p) + "[i][param] = o;");
+        c.line("run(g, i);");
         c.close().close().blank();
         c.open("private static int paramIndex" + BehaviourWriter.suffix(p) + "(String port)");
         c.open("switch (String.valueOf(port))");
@@ -194,7 +198,7 @@ final class RoleWriter {
         c.line("default: return -1;");
         c.close().close().blank();
         c.line("/** Fires the largest complete interaction of " + t.name() + " (round robin among equals), if any. */");
-        c.open("private boolean coordinate" + BehaviourWriter.suffix(p) + "(int i)");
+        c.open("private boolean coordinate" + BehaviourWriter.suffix(p) + "(Group g, int i)");
         c.open("if (CONNECTOR_" + BehaviourWriter.suffix(p) + "[i] == null)").line("return false;").close();
         int k = 0;
         while (k < candidates.size()) {
@@ -205,17 +209,17 @@ final class RoleWriter {
             }
             int count = end - k;
             c.open("for (int n = 0; n < " + count + "; n++)");
-            c.line("int m = " + k + " + (rotation" + BehaviourWriter.suffix(p) + "[i] + n) % " + count + ";");
-            c.open("if (interaction" + BehaviourWriter.suffix(p) + "(i, m))");
-            c.line("rotation" + BehaviourWriter.suffix(p) + "[i] = m - " + k + " + 1;");
+            c.line("int m = " + k + " + (g.rotation" + BehaviourWriter.suffix(p) + "[i] + n) % " + count + ";");
+            c.open("if (interaction" + BehaviourWriter.suffix(p) + "(g, i, m))");
+            c.line("g.rotation" + BehaviourWriter.suffix(p) + "[i] = m - " + k + " + 1;");
             c.line("return true;").close();
             c.close();
             k = end;
         }
         c.line("return false;");
         c.close().blank();
-        c.open("private boolean interaction" + BehaviourWriter.suffix(p) + "(int i, int m)");
-        c.line(offer + "[] offers = offers" + BehaviourWriter.suffix(p) + "[i];");
+        c.open("private boolean interaction" + BehaviourWriter.suffix(p) + "(Group g, int i, int m)");
+        c.line(offer + "[] offers = g.offers" + BehaviourWriter.suffix(p) + "[i];");
         c.open("switch (m)");
         for (int m = 0; m < candidates.size(); m++) {
             long mask = candidates.get(m);
@@ -236,6 +240,7 @@ final class RoleWriter {
                 c.line(w.boundField(p.port(), v.name()) + " = " + ConnectorCode.local(selfName, v.name()) + ";");
             }
             c.line(type + " e = new " + type + "();");
+        c.line("e.group = g.wire;");
             c.line("e.connector = CONNECTOR_" + BehaviourWriter.suffix(p) + "[i];");
             c.line("e.initiator = " + JavaNames.literal(selfName) + ";");
             for (String member : members) {
@@ -254,7 +259,7 @@ final class RoleWriter {
                     c.line("offers[" + q + "] = null;");
                 }
             }
-            c.line("fire(i, " + w.port(p) + ");");
+            c.line("fire(g, i, " + w.port(p) + ");");
             c.line("bus.deliver(e);");
             c.line("return true;");
             c.close("}");

@@ -108,6 +108,57 @@ class MainTest {
         Path model = dir.resolve("U.bip");
         Files.writeString(model, "package U\n  use Missing\nend\n");
         assertThat(run("check", model.toString())).isEqualTo(1);
-        assertThat(err()).contains(model + ":2:3: error: package Missing not found: no Missing.bip in the model path");
+        assertThat(err()).contains(model + ":2:3: error: package Missing not found: add -I <folder holding Missing.bip> "
+                + "(Maven: a <modelPath> entry), or name its file; the model path is [" + dir + "]");
+    }
+
+    private static final String B = "../../behaviours/";
+
+    @Test
+    void oneMissingModelFolderIsOneErrorWithTheFlagToAdd() {
+        assertThat(run("generate", B + "robot/src/main/bip/Robot.bip", "-o", dir.resolve("gen").toString()))
+                .isEqualTo(1);
+        // without the folder of Warehouse.bip every port type and constant of Robot.bip is unknown: 16 errors in all
+        assertThat(err()).isEqualTo(B + "robot/src/main/bip/Robot.bip:6:3: error: package Warehouse not found: add -I "
+                + "<folder holding Warehouse.bip> (Maven: a <modelPath> entry), or name its file; the model path is ["
+                + B + "robot/src/main/bip]\n"
+                + "bip: 1 error(s), 0 warning(s) (and 15 unknown name(s) in packages that use a package not found, not "
+                + "shown)\n");
+        assertThat(out.toString(StandardCharsets.UTF_8)).isEmpty();
+    }
+
+    @Test
+    void aPackageMissingForSeveralFilesIsReportedOnce() throws Exception {
+        Files.writeString(dir.resolve("A.bip"), "package A\n  use Gone\n  atom type X()\n    port Gone.T p()\n"
+                + "    place S\n    initial to S\n  end\nend\n");
+        Files.writeString(dir.resolve("B.bip"), "package B\n  use Gone\n  use A\nend\n");
+        assertThat(run("check", dir.resolve("A.bip").toString(), dir.resolve("B.bip").toString())).isEqualTo(1);
+        assertThat(err()).containsOnlyOnce("package Gone not found").contains("bip: 1 error(s)");
+    }
+
+    @Test
+    void generateSaysWhatItWroteWhatNotWhyAndWhichFlagsWould() {
+        Path gen = dir.resolve("gen");
+        assertThat(run("generate", B + "robot/src/main/bip/Robot.bip", "-I", B + "events/src/main/bip", "-o",
+                gen.toString())).as(err()).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).isEqualTo("bip: wrote 2 Java file(s) to " + gen + ":\n"
+                + "  Robot_behavior: eu.brain.iot.behaviours.robot.RobotBehavior (atom class), RobotBehaviorExterns "
+                + "(its extern functions: implement this interface)\n"
+                + "  no behaviour class for Robot_behavior: no root compound instantiates it (the files given declare "
+                + "no compound type and --root names none)\n"
+                + "  no event types: they are generated with the root compound\n"
+                + "  to generate the behaviour of Robot_behavior: give --root WarehouseSystem.Compound (in " + B
+                + "events/src/main/bip/WarehouseSystem.bip) and -I for the folder of every package it uses\n");
+
+        // following the hint: the behaviour, and why the event types are not here
+        out.reset();
+        assertThat(run("generate", B + "robot/src/main/bip/Robot.bip", "-I", B + "events/src/main/bip", "-I",
+                B + "door/src/main/bip", "-I", B + "orchestrator/src/main/bip", "--root", "WarehouseSystem.Compound",
+                "-o", gen.toString())).as(err()).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("bip: wrote 3 Java file(s)")
+                .contains("  Robot_behavior: eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour (smart behaviour "
+                        + "hosting Robot1, Robot2, Robot3 of WarehouseSystem.Compound, one copy per group)\n")
+                .contains("  no event types: they belong to the root compound's package WarehouseSystem");
+        assertThat(gen.resolve("eu/brain/iot/behaviours/robot/RobotBehaviorBehaviour.java")).exists();
     }
 }

@@ -113,8 +113,8 @@ class CheckedModelsCompileTest {
                 });
         Object impl = java.lang.reflect.Proxy.newProxyInstance(loader, new Class<?>[] {externs},
                 (proxy, method, args) -> method.getName().equals("clamp") ? args[0] : null);
-        Object behaviour = loader.loadClass("later.SensorBehaviour").getConstructors()[0].newInstance(bus, impl,
-                Map.of());
+        Object behaviour = loader.loadClass("later.SensorBehaviour").getConstructor(eu.brain.iot.eventing.api.EventBus.class,
+                externs, Map.class).newInstance(bus, impl, Map.of());
         java.lang.reflect.Method notify = behaviour.getClass().getMethod("notify",
                 eu.brain.iot.eventing.api.BrainIoTEvent.class);
         java.lang.reflect.Method places = behaviour.getClass().getMethod("placesOf", String.class);

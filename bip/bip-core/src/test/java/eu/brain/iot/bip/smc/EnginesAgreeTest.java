@@ -26,10 +26,11 @@ class EnginesAgreeTest {
         {"KnuthYao", "P=? [ F<=10 die.d == 3 && die at DONE ]"},
         {"BirthDeath", "P=? [ F<=10 pop.visits >= 1 && env at L ]"},
         {"Mixed", "P=? [ F<=10 snd.w > 2.5 && rc1.got % 3 == 1 || rc2 at BUSY || n1 at P3 ]"},
+        {"Subset", "P=? [ F<=10 O.rounds >= 2 && O.a > 3 || R2.reports >= 2 && R1 at READY ]"},
     };
 
     @ParameterizedTest
-    @ValueSource(ints = {0, 1, 2, 3, 4})
+    @ValueSource(ints = {0, 1, 2, 3, 4, 5})
     void sampledTracesAreIdentical(int model) throws Exception {
         SmcSession session = SmcModels.load(SmcModels.DIR.resolve(MODELS[model][0] + ".bip"));
         Query q = session.parse(MODELS[model][1]);

@@ -69,7 +69,9 @@ abstract class AbstractBipMojo extends AbstractMojo {
             }
         }
         if (diagnostics.hasErrors()) {
-            throw new MojoFailureException("BIP models have " + diagnostics.errorCount() + " error(s); see above");
+            throw new MojoFailureException("BIP models have " + diagnostics.errorCount() + " error(s); see above"
+                    + (diagnostics.hiddenCount() == 0 ? "" : " (and " + diagnostics.hiddenCount() + " unknown name(s) "
+                            + "in packages that use a package not found, not shown)"));
         }
     }
 }

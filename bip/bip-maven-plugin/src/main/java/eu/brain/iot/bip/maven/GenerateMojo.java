@@ -51,7 +51,8 @@ public class GenerateMojo extends AbstractBipMojo {
         int written = tool.generate(out, root, strict);
         report(tool.diagnostics());
         project.addCompileSourceRoot(outputDirectory.getAbsolutePath());
-        getLog().info("BIP: wrote " + written + " Java file(s) to " + out);
+        getLog().info("BIP: wrote " + written + " Java file(s) to " + out + ":");
+        tool.summary().forEach(line -> getLog().info("  " + line));
     }
 
     /** Removes Java left from an earlier run, so a renamed atom leaves no stale class behind. */
