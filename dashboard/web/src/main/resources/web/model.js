@@ -5,7 +5,7 @@ const DECISIONS = 30;
 
 export class Model {
   constructor() {
-    this.devices = new Map();      // id -> {id, kind, status, reason, lastPoll, values: {service: {resource: value}}}
+    this.devices = new Map();      // id -> {id, kind, status, reason, values: {service: {resource: value}}}
     this.counters = {};
     this.decisions = [];           // oldest first, one per commandId
     this.fabric = {};
@@ -27,7 +27,17 @@ export class Model {
 
   /** Applies one delta event; {@code id} is its event id. */
   apply(delta, id) {
-    for (const d of delta.devices) this.devices.set(d.id, d);
+    for (const d of delta.devices) {
+      const known = this.devices.get(d.id);
+      if (d.full || !known) {
+        this.devices.set(d.id, d);
+      } else { // only what changed: merge it
+        known.status = d.status;
+        for (const service in d.values) {
+          known.values[service] = Object.assign(known.values[service] || {}, d.values[service]);
+        }
+      }
+    }
     for (const gone of delta.removed) this.devices.delete(gone);
     if (delta.devices.length || delta.removed.length) this.devicesChanged = true;
     if (delta.counters) this.counters = delta.counters;

@@ -53,20 +53,38 @@ function params(p) {
 }
 
 export function renderDevices(model) {
-  const all = [...model.devices.values()].filter(d => d.kind === 'robot' || d.kind === 'door');
-  const trouble = all.filter(d => d.status !== 'OK').length;
+  // the model keeps devices in id order (the snapshot's, then new ones): no sort, only those in trouble first
+  const trouble = [], ok = [];
+  for (const d of model.devices.values()) {
+    if (d.kind !== 'robot' && d.kind !== 'door') continue;
+    (d.status === 'OK' ? ok : trouble).push(d);
+  }
+  trouble.sort((a, b) => TROUBLE[a.status] - TROUBLE[b.status]);
+  const all = trouble.length + ok.length;
   document.getElementById('device-summary').textContent =
-    `${all.length} devices, ${trouble} stale or unreachable` + (all.length > ROWS ? `; ${ROWS} shown, in trouble first` : '');
-  all.sort((a, b) => (TROUBLE[a.status] - TROUBLE[b.status]) || a.id.localeCompare(b.id, 'en', { numeric: true }));
-  rows('devices', all.slice(0, ROWS), d => {
+    `${all} devices, ${trouble.length} stale or unreachable` + (all > ROWS ? `; ${ROWS} shown, in trouble first` : '');
+  const shown = trouble.concat(ok.slice(0, Math.max(0, ROWS - trouble.length))).slice(0, ROWS);
+  const body = document.querySelector('#devices tbody');
+  while (body.rows.length > shown.length) body.deleteRow(-1);
+  shown.forEach((d, i) => {
+    const tr = body.rows[i] || body.insertRow();
     const x = value(d, 'position', 'x'), y = value(d, 'position', 'y');
     const mission = value(d, 'mission', 'type');
-    const tr = row([d.id, d.status === 'OK' ? 'ok' : `${d.status.toLowerCase()}${d.reason ? `: ${d.reason}` : ''}`,
+    fill(tr, [d.id, d.status === 'OK' ? 'ok' : `${d.status.toLowerCase()}${d.reason ? `: ${d.reason}` : ''}`,
       `(${x}, ${y})`, value(d, 'position', 'heading') || '',
       value(d, 'state', 'state') || value(d, 'door', 'state') || '', value(d, 'state', 'obstacle') || '',
       value(d, 'cart', 'cart') || '', mission ? `${mission} ${value(d, 'mission', 'state')}` : '']);
-    Object.assign(tr.dataset, { device: d.id, kind: d.kind, status: d.status, x, y });
-    return tr;
+    const data = { device: d.id, kind: d.kind, status: d.status, x: String(x), y: String(y) };
+    for (const k in data) if (tr.dataset[k] !== data[k]) tr.dataset[k] = data[k];
+  });
+}
+
+/** Sets a row's cells in place, touching only the text that changed (a rebuilt row costs layout). */
+function fill(tr, cells) {
+  while (tr.cells.length < cells.length) tr.insertCell();
+  cells.forEach((c, i) => {
+    const text = c == null ? '' : String(c);
+    if (tr.cells[i].textContent !== text) tr.cells[i].textContent = text;
   });
 }
 

@@ -13,8 +13,8 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     String PID = "eu.brain.iot.dashboard";
 
-    @AttributeDefinition(description = "Changes are gathered for this long, then sent as one event (milliseconds)")
-    long flush_ms() default 250;
+    @AttributeDefinition(description = "Changes are gathered for this long, then sent as one event (milliseconds); the edge polls every 500 ms, and each event costs the page a redraw")
+    long flush_ms() default 500;
 
     @AttributeDefinition(description = "How often the bus statistics, the installed behaviours and the BMS history "
             + "are read (milliseconds)")
@@ -22,7 +22,7 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     @AttributeDefinition(description = "Events kept for clients that reconnect with Last-Event-ID; an older id gets "
             + "a fresh snapshot instead")
-    int replay_events() default 480;
+    int replay_events() default 240;
 
     @AttributeDefinition(description = "Events a client may have waiting; one more and it is disconnected as too "
             + "slow (it reconnects and catches up)")

@@ -1,6 +1,5 @@
 package eu.brain.iot.dashboard;
 
-import java.time.Instant;
 import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
@@ -33,7 +32,6 @@ final class Devices {
         String kind;
         ResourceStatus status = ResourceStatus.OK;
         String reason;
-        Instant lastPoll;
         final Map<String, Map<String, Object>> values = new TreeMap<>();
 
         Device(String id) {
@@ -42,7 +40,10 @@ final class Devices {
     }
 
     private final Map<String, Device> devices = new TreeMap<>();
+    /** Providers to send whole (new, reloaded). */
     private final Set<String> changed = new LinkedHashSet<>();
+    /** Of the others: the resources that changed since the last event, by provider, then service. */
+    private final Map<String, Map<String, Map<String, Object>>> partial = new LinkedHashMap<>();
     private final Set<String> removed = new LinkedHashSet<>();
     private final DoorWatcher doors;
 
@@ -56,11 +57,11 @@ final class Devices {
         d.kind = p.kind();
         d.status = p.status();
         d.reason = p.reason();
-        d.lastPoll = p.lastPoll();
         d.values.clear();
         p.services().forEach((service, resources) -> resources.forEach(
                 (name, v) -> d.values.computeIfAbsent(service, s -> new TreeMap<>()).put(name, v.value())));
         changed.add(p.id());
+        partial.remove(p.id());
         removed.remove(p.id());
     }
 
@@ -82,8 +83,10 @@ final class Devices {
             doors.doorState(d.id, String.valueOf(before), String.valueOf(v.value()));
         }
         d.status = v.status();
-        d.lastPoll = v.status() == ResourceStatus.OK ? v.timestamp() : d.lastPoll;
-        changed.add(d.id);
+        if (!changed.contains(d.id)) {
+            partial.computeIfAbsent(d.id, id -> new TreeMap<>()).computeIfAbsent(v.service(), s -> new TreeMap<>())
+                    .put(v.resource(), v.value());
+        }
         removed.remove(d.id);
         return reload;
     }
@@ -94,6 +97,7 @@ final class Devices {
             if (!ids.contains(id)) {
                 devices.remove(id);
                 changed.remove(id);
+                partial.remove(id);
                 removed.add(id);
             }
         }
@@ -111,19 +115,36 @@ final class Devices {
     }
 
     boolean hasChanges() {
-        return !changed.isEmpty() || !removed.isEmpty();
+        return !changed.isEmpty() || !partial.isEmpty() || !removed.isEmpty();
     }
 
-    /** The providers changed since the last call, as the page shows them, and forgets that they changed. */
+    /**
+     * The providers changed since the last call, and forgets that they changed: new or reloaded ones whole
+     * ({@code "full": true}), the others with their status and only the resources that changed, which the page
+     * merges into what it has (a robot that moved costs its position, not its dozen other resources).
+     */
     List<Map<String, Object>> takeChanged() {
-        List<Map<String, Object>> out = new ArrayList<>(changed.size());
+        List<Map<String, Object>> out = new ArrayList<>(changed.size() + partial.size());
         for (String id : changed) {
             Device d = devices.get(id);
             if (d != null) {
-                out.add(view(d));
+                Map<String, Object> m = view(d);
+                m.put("full", true);
+                out.add(m);
             }
         }
+        partial.forEach((id, values) -> {
+            Device d = devices.get(id);
+            if (d != null) {
+                Map<String, Object> m = new LinkedHashMap<>();
+                m.put("id", id);
+                m.put("status", d.status.name());
+                m.put("values", values);
+                out.add(m);
+            }
+        });
         changed.clear();
+        partial.clear();
         return out;
     }
 
@@ -146,7 +167,6 @@ final class Devices {
         m.put("kind", d.kind);
         m.put("status", d.status.name());
         m.put("reason", d.reason);
-        m.put("lastPoll", d.lastPoll == null ? null : d.lastPoll.toEpochMilli());
         m.put("values", d.values);
         return m;
     }
