@@ -34,6 +34,7 @@ final class Node implements AutoCloseable {
     private final int port;
     private final StringBuilder output = new StringBuilder();
     private Process process;
+    private boolean shell;
 
     /**
      * @param home   a folder of the test's: the node's configuration and framework storage go there
@@ -64,10 +65,21 @@ final class Node implements AutoCloseable {
         return URI.create("http://127.0.0.1:" + port + "/");
     }
 
+    /** The node will read Gogo commands from {@link #type} (else it runs without a shell). */
+    Node withShell() {
+        shell = true;
+        return this;
+    }
+
+    /** Types a line into the node's Gogo shell. */
+    void type(String line) throws IOException {
+        process.outputWriter(StandardCharsets.UTF_8).append(line).append('\n').flush();
+    }
+
     /** Starts the node and waits until the dashboard answers. */
     Node start() throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
-                "-Dgosh.args=--nointeractive", "-Dfabric.node.root=" + ROOT,
+                "-Dgosh.args=" + (shell ? "" : "--nointeractive"), "-Dfabric.node.root=" + ROOT,
                 "-Dfelix.fileinstall.dir=" + home.resolve("config"),
                 "-Dorg.osgi.framework.storage=" + home.resolve("felix-cache"),
                 "-Dorg.osgi.service.http.port=" + port, "-jar", JAR.toString()));
