@@ -89,6 +89,9 @@ public final class ApiServlet extends HttpServlet {
         resp.setCharacterEncoding("UTF-8");
         resp.setHeader("Cache-Control", "no-store");
         resp.setHeader("X-Accel-Buffering", "no");
+        if (req.getMethod().equals("HEAD")) {
+            return; // the headers only: a stream has no length to tell
+        }
         AsyncContext async = req.startAsync();
         async.setTimeout(0); // a stream has no end of its own; heartbeats find the pages that left
         hub.attach(new SseStream(async, hub.clientQueueCapacity(), hub::detach), last);

@@ -66,8 +66,9 @@ public final class Hub {
     private final Devices devices;
     private final EventLog events;
     private final Set<SseStream> streams = new HashSet<>();
-    private Map<String, Object> fabricNow = Map.of();
-    private Map<String, Object> fabricToSend;
+    /** The fabric's last reading, as JSON (DTOs have no equals: compared as text). */
+    private String fabricNow = "{}";
+    private boolean fabricChanged;
     private long nextReconcile;
 
     @Activate
@@ -169,7 +170,7 @@ public final class Hub {
         m.put("devices", devices.all());
         m.put("counters", activity.counters());
         m.put("decisions", activity.decisions());
-        m.put("fabric", fabricNow);
+        m.put("fabric", Json.raw(fabricNow));
         m.put("consumed", ConsumedTypes.CONSUMED);
         return m;
     }
@@ -187,10 +188,10 @@ public final class Hub {
 
     private void readFabric() {
         try {
-            Map<String, Object> now = fabric.read();
+            String now = Json.write(fabric.read());
             if (!now.equals(fabricNow)) {
                 fabricNow = now;
-                fabricToSend = now;
+                fabricChanged = true;
             }
         } catch (RuntimeException e) {
             log.warn("dashboard: could not read the fabric's statistics: " + e);
@@ -233,7 +234,7 @@ public final class Hub {
     private void publish() {
         Map<String, Long> counters = activity.takeCounters();
         List<Map<String, Object>> decisions = activity.takeDecisions();
-        if (!devices.hasChanges() && counters == null && decisions.isEmpty() && fabricToSend == null) {
+        if (!devices.hasChanges() && counters == null && decisions.isEmpty() && !fabricChanged) {
             return;
         }
         Map<String, Object> delta = new LinkedHashMap<>();
@@ -246,9 +247,9 @@ public final class Hub {
         if (!decisions.isEmpty()) {
             delta.put("decisions", decisions);
         }
-        if (fabricToSend != null) {
-            delta.put("fabric", fabricToSend);
-            fabricToSend = null;
+        if (fabricChanged) {
+            delta.put("fabric", Json.raw(fabricNow));
+            fabricChanged = false;
         }
         String frame = events.append("delta", Json.write(delta)).text();
         List.copyOf(streams).forEach(s -> s.send(frame));

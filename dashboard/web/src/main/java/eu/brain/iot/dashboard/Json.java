@@ -28,6 +28,11 @@ final class Json {
         }
     }
 
+    /** JSON text written as it is inside a larger answer. */
+    static Object raw(String json) {
+        return new com.fasterxml.jackson.databind.util.RawValue(json);
+    }
+
     static void answer(HttpServletResponse resp, int status, String json) throws IOException {
         resp.setStatus(status);
         resp.setContentType("application/json");
