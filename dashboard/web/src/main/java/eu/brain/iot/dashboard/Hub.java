@@ -175,11 +175,21 @@ public final class Hub {
         return m;
     }
 
+    /** Reads the model whole: every provider is sent whole in the next event. */
     private void reload() {
-        List<ProviderSnapshot> all = model.providers();
+        reconcile(true);
+    }
+
+    /**
+     * Drops the providers the model no longer has (a fleet reconfigured) and loads those the listener has not told
+     * of; with {@code all}, loads every provider again.
+     */
+    private void reconcile(boolean all) {
         Set<String> ids = new HashSet<>();
-        for (ProviderSnapshot p : all) {
-            devices.load(p);
+        for (ProviderSnapshot p : model.providers()) {
+            if (all || !devices.ids().contains(p.id())) {
+                devices.load(p);
+            }
             ids.add(p.id());
         }
         devices.retain(ids);
@@ -202,7 +212,7 @@ public final class Hub {
         try {
             apply();
             if (System.currentTimeMillis() >= nextReconcile) {
-                reload(); // providers the edge dropped (a fleet reconfigured) are seen here
+                reconcile(false);
             }
             publish();
         } catch (RuntimeException e) {
