@@ -117,7 +117,17 @@ function row(cells) {
   return tr;
 }
 
+const EMPTY = { decisions: 'no command yet', behaviours: 'none installed (or no installer on this node)',
+  'bms-history': 'nothing yet', 'event-types': 'no event yet' };
+
 function rows(tableId, items, make) {
   const body = document.querySelector(`#${tableId} tbody`);
+  if (!items.length && EMPTY[tableId]) {
+    const tr = row([EMPTY[tableId]]);
+    tr.className = 'empty';
+    tr.cells[0].colSpan = 8;
+    body.replaceChildren(tr);
+    return;
+  }
   body.replaceChildren(...items.map(make));
 }
