@@ -22,7 +22,8 @@ export class Drawing {
   /** Draws the model; returns (and keeps, for tests) what was drawn where. */
   draw(model) {
     const map = mapOf(model);
-    const [width, height] = map ? [map.width, map.height] : extent(model);
+    // without a map, the grid only grows: a robot that comes back from a far corner must not make the drawing jump
+    const [width, height] = map ? [map.width, map.height] : this.grow(extent(model));
     const cell = Math.max(2, Math.min(32, Math.floor(MAX_CANVAS / Math.max(width, height * 2))));
     this.resize(width * cell, height * cell);
     const key = `${width}x${height}@${cell}:${map ? map.rows.join('') : ''}`;
@@ -41,6 +42,11 @@ export class Drawing {
     drawRobots(ctx, model.ofKind('robot'), cell, scene.robots);
     this.scene = scene;
     return scene;
+  }
+
+  grow([w, h]) {
+    this.extent = [Math.max(w, this.extent ? this.extent[0] : 0), Math.max(h, this.extent ? this.extent[1] : 0)];
+    return this.extent;
   }
 
   /** Makes the canvas paint what it was told now (reading a pixel waits for it), for honest timing. */
