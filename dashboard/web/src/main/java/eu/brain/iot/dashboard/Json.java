@@ -1,0 +1,50 @@
+package eu.brain.iot.dashboard;
+
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.util.LinkedHashMap;
+import java.util.Map;
+
+import com.fasterxml.jackson.core.JsonGenerator;
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.ObjectMapper;
+
+import jakarta.servlet.http.HttpServletResponse;
+
+/** JSON for the page: answers and errors; every error is {@code {"error": "...", "status": N}}, never a stack trace. */
+final class Json {
+
+    /** Thread-safe once configured; shared by every thread. */
+    private static final ObjectMapper MAPPER = new ObjectMapper().disable(JsonGenerator.Feature.AUTO_CLOSE_TARGET);
+
+    private Json() {
+    }
+
+    static String write(Object value) {
+        try {
+            return MAPPER.writeValueAsString(value);
+        } catch (JsonProcessingException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    /** JSON text written as it is inside a larger answer. */
+    static Object raw(String json) {
+        return new com.fasterxml.jackson.databind.util.RawValue(json);
+    }
+
+    static void answer(HttpServletResponse resp, int status, String json) throws IOException {
+        resp.setStatus(status);
+        resp.setContentType("application/json");
+        resp.setCharacterEncoding("UTF-8");
+        resp.setHeader("Cache-Control", "no-store"); // live values: a cached answer would be a stale one
+        resp.getWriter().write(json);
+    }
+
+    static void error(HttpServletResponse resp, int status, String message) throws IOException {
+        Map<String, Object> body = new LinkedHashMap<>();
+        body.put("error", message);
+        body.put("status", status);
+        answer(resp, status, write(body));
+    }
+}
