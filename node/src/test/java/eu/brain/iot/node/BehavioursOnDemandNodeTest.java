@@ -25,7 +25,8 @@ class BehavioursOnDemandNodeTest {
     private static final String READY = "fabric node ready in ";
     private static final String DOOR_EVENT = "eu.brain.iot.behaviours.events.ConnectorTypeDoor";
     private static final Path REPOSITORY = Path.of("..", "repository", "target").toAbsolutePath().normalize();
-    private static final Pattern INSTALLED_COUNT = Pattern.compile(READY + "\\d+ ms \\([^,]*, (\\d+) bundles installed");
+    private static final Pattern INSTALLED_COUNT = Pattern.compile(
+            READY + "\\d+ ms \\([^;]*; start level 1: \\d+ of (\\d+) bundles active");
 
     @TempDir
     Path configDir;

@@ -24,7 +24,7 @@ import org.junit.jupiter.api.io.TempDir;
 class FabricNodeSmokeTest {
 
     private static final String READY = "fabric node ready in ";
-    private static final String ALL_ACTIVE = "fabric node: all ";
+    private static final String ALL_ACTIVE = "fabric node: start levels 1 and 2 up in ";
 
     @TempDir
     Path configDir;
@@ -41,7 +41,9 @@ class FabricNodeSmokeTest {
             assertThat(started).doesNotContain("WITH PROBLEMS").doesNotContain("Exception");
             // then the edge and Felix HTTP start; the Gogo shell comes after both lines, so its prompt is last
             String prompted = node.awaitOutput("g! ");
-            assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms");
+            assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ ms \\(the core, then the edge and its REST API\\): "
+                    + "\\d+ of \\d+ bundles active; the other (one starts|\\d+ start) at level 3: the Gogo shell"
+                    + "( and the config folder's bundles)?, last so that its prompt follows this line");
             assertThat(prompted.indexOf("g! ")).isGreaterThan(prompted.indexOf(ALL_ACTIVE))
                     .isGreaterThan(prompted.indexOf(READY));
 
@@ -93,6 +95,18 @@ class FabricNodeSmokeTest {
         }
     }
 
+    @Test
+    void aCheckRunWaitingForAServiceThatNeverComesGivesUpAtItsDeadline() throws Exception {
+        try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
+                "-Dfabric.node.ready.services=no.such.Service", "-Dfabric.node.check.timeout=3",
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+            assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isEqualTo(1);
+            assertThat(node.output()).contains("fabric node: check run gave up after 3 s (fabric.node.check.timeout=3), "
+                    + "still waiting for: service no.such.Service (fabric.node.ready.services)")
+                    .doesNotContain(READY);
+        }
+    }
+
     /** A port free now, for the node's HTTP server, so that the test does not clash with a node already running. */
     private static int freePort() throws Exception {
         try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
@@ -109,7 +123,7 @@ class FabricNodeSmokeTest {
                     + node.pid()).doesNotContain("'stop 0'").doesNotContain("WITH PROBLEMS");
             node.terminate();
             assertThat(node.awaitExit()).as("exit code after SIGTERM; output:%n%s", node.output()).isEqualTo(143);
-            assertThat(node.output()).doesNotContain("Gogo").doesNotContain("Exception");
+            assertThat(node.output()).doesNotContain("Welcome to Apache Felix Gogo").doesNotContain("Exception");
         }
     }
 
@@ -119,9 +133,11 @@ class FabricNodeSmokeTest {
                 "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
             assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isZero();
             assertThat(node.output())
-                    .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up, \\d+ bundles installed\\)")
-                    .containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms")
-                    .as("no shell in check mode").doesNotContain("Gogo").doesNotContain("Exception")
+                    .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up; start level 1: \\d+ of \\d+ "
+                            + "bundles active, the other \\d+ start next\\); check run")
+                    .containsPattern(ALL_ACTIVE + "\\d+ ms [^\\n]*: (\\d+) of (\\d+) bundles active; a check run "
+                            + "stops here, before level 3 \\(the Gogo shell\\)")
+                    .as("no shell in check mode").doesNotContain("Welcome to Apache Felix Gogo").doesNotContain("Exception")
                     .as("SPI Fly's INFO lines are silenced (fabric.node.jul.levels)")
                     .doesNotContain("Registered provider");
         }

@@ -2,11 +2,13 @@ package eu.brain.iot.node.ready;
 
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
-import java.util.Arrays;
 import java.util.Dictionary;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
@@ -51,7 +53,7 @@ import eu.brain.iot.eventing.api.EventBus;
  * is configured: see {@link ReadyService}).
  * <p>
  * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
- * {@link #lastLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
+ * {@link #lastLevel} and {@link #shellLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
  * own threads (each service event of a ready service looks again).
  */
 @Component
@@ -66,6 +68,14 @@ public final class ReadyReporter {
      * says it is ready has its behaviours back and installs missing ones on demand.
      */
     public static final String READY_SERVICES = "fabric.node.ready.services";
+
+    /**
+     * Framework (or system) property: how many seconds a check run ({@value #EXIT_WHEN_READY}) waits for both lines;
+     * then it says what it was still waiting for and exits with 1. A ready service that never comes (a behaviour
+     * installer without its index, say) would otherwise hang the check.
+     */
+    public static final String CHECK_TIMEOUT = "fabric.node.check.timeout";
+    static final long DEFAULT_CHECK_TIMEOUT_SECONDS = 120;
 
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
@@ -87,8 +97,6 @@ public final class ReadyReporter {
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
-        } else if (event.getType() == FrameworkEvent.STARTLEVEL_CHANGED) {
-            levelReached();
         }
     };
 
@@ -100,6 +108,10 @@ public final class ReadyReporter {
     private int fullLevel;
     /** The level the node ends at: the shell's (or the initial bundle start level), not in a check. */
     private int lastLevel;
+    /** The Gogo shell's start level, 0 without a shell bundle. */
+    private int shellLevel;
+    /** A check run's deadline (its own daemon thread), {@code null} otherwise. */
+    private final ScheduledExecutorService deadline;
 
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
@@ -109,6 +121,17 @@ public final class ReadyReporter {
             StringBuilder filter = new StringBuilder("(|");
             readyServices.forEach(s -> filter.append("(objectClass=").append(s.name()).append(')'));
             context.addServiceListener(readyServicesListener, filter.append(')').toString());
+        }
+        if (Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY))) {
+            long seconds = checkTimeoutSeconds(context.getProperty(CHECK_TIMEOUT));
+            deadline = Executors.newSingleThreadScheduledExecutor(r -> {
+                Thread thread = new Thread(r, "fabric-node-check-deadline");
+                thread.setDaemon(true);
+                return thread;
+            });
+            deadline.schedule(() -> giveUp(seconds), seconds, TimeUnit.SECONDS);
+        } else {
+            deadline = null;
         }
         context.addFrameworkListener(frameworkListener);
         context.addServiceListener(launcherListener, LAUNCHER_READY);
@@ -122,6 +145,74 @@ public final class ReadyReporter {
         context.removeServiceListener(launcherListener);
         context.removeServiceListener(readyServicesListener);
         context.removeFrameworkListener(frameworkListener);
+        if (deadline != null) {
+            deadline.shutdownNow();
+        }
+    }
+
+    /** The check's deadline in seconds: the property's value, or the default when it is missing or not a number. */
+    static long checkTimeoutSeconds(String property) {
+        if (property == null || property.isBlank()) {
+            return DEFAULT_CHECK_TIMEOUT_SECONDS;
+        }
+        try {
+            long seconds = Long.parseLong(property.trim());
+            if (seconds > 0) {
+                return seconds;
+            }
+        } catch (NumberFormatException e) {
+            // below
+        }
+        System.out.printf("fabric node: %s=%s is not a number of seconds above 0; the check waits %d s%n",
+                CHECK_TIMEOUT, property, DEFAULT_CHECK_TIMEOUT_SECONDS);
+        return DEFAULT_CHECK_TIMEOUT_SECONDS;
+    }
+
+    /** A check run's deadline passed before both lines were out: say what is missing, and exit with 1. */
+    private void giveUp(long seconds) {
+        List<String> waiting;
+        synchronized (this) {
+            if (fullLevel < 0) {
+                return; // both lines are out (or on their way): the check ends by itself
+            }
+            waiting = waitingFor();
+            reported = true;
+            fullLevel = -1;
+        }
+        System.out.printf("fabric node: check run gave up after %d s (%s), still waiting for: %s%n", seconds,
+                CHECK_TIMEOUT + "=" + seconds, String.join("; ", waiting));
+        exitWith(1);
+    }
+
+    /** What the lines still wait for. Called under {@code this}. */
+    private List<String> waitingFor() {
+        List<String> waiting = new java.util.ArrayList<>();
+        if (!launched) {
+            waiting.add("the launcher to start every bundle of the first start level");
+        }
+        if (buses == 0) {
+            waiting.add("the event bus (" + EventBus.class.getName() + ")");
+        }
+        for (ReadyService service : readyServices) {
+            try {
+                if (required(service) && context.getServiceReferences(service.name(), null) == null) {
+                    waiting.add("service " + service.name() + " (" + READY_SERVICES + ")");
+                }
+            } catch (InvalidSyntaxException | IllegalStateException e) {
+                waiting.add("service " + service.name() + " (" + e.getMessage() + ")");
+            }
+        }
+        FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
+                .adapt(FrameworkStartLevel.class);
+        if (fullLevel > 0 && framework.getStartLevel() < fullLevel) {
+            waiting.add("start level " + fullLevel + " (at " + framework.getStartLevel() + ")");
+        }
+        int max = fullLevel > 0 ? fullLevel : BundleHealth.startLevel(context.getBundle());
+        waiting.addAll(BundleHealth.problems(context.getBundles(), max));
+        if (waiting.isEmpty()) {
+            waiting.add("the framework to report its start level (every bundle looks active)");
+        }
+        return waiting;
     }
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC, unbind = "busGone")
@@ -154,12 +245,12 @@ public final class ReadyReporter {
         }
         long sinceJvmStart = System.currentTimeMillis() - jvmStartMillis;
         Bundle[] bundles = context.getBundles();
-        List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
+        int core = BundleHealth.startLevel(context.getBundle());
+        List<String> problems = BundleHealth.problems(bundles, core);
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
-                    sinceJvmStart, waitedFor(), bundles.length,
+            System.out.println(readyLine(sinceJvmStart, waitedFor(), core, Census.of(bundles, core),
                     howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
-                            context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
+                            context.getProperty(SHELL_ARGS), ProcessHandle.current().pid())));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
@@ -180,12 +271,18 @@ public final class ReadyReporter {
         FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
                 .adapt(FrameworkStartLevel.class);
         synchronized (this) {
+            if (fullLevel < 0) {
+                return; // a check run gave up meanwhile
+            }
             coreHealthy = problems.isEmpty();
             fullLevel = full;
+            shellLevel = shell;
             lastLevel = check ? full : Math.max(highest, framework.getInitialBundleStartLevel());
         }
         if (full > framework.getStartLevel()) {
-            framework.setStartLevel(full);
+            // told when this change is complete: a STARTLEVEL_CHANGED of an earlier change (the launcher's to level 1)
+            // may still be on its way, and the framework already reports the new level while starting its bundles
+            framework.setStartLevel(full, event -> levelReached());
         } else {
             levelReached();
         }
@@ -241,6 +338,7 @@ public final class ReadyReporter {
                 .adapt(FrameworkStartLevel.class);
         int level;
         int last;
+        int shell;
         boolean core;
         synchronized (this) {
             if (fullLevel <= 0 || framework.getStartLevel() < fullLevel) {
@@ -248,6 +346,7 @@ public final class ReadyReporter {
             }
             level = fullLevel;
             last = lastLevel;
+            shell = shellLevel;
             fullLevel = -1;
             core = coreHealthy;
         }
@@ -258,10 +357,10 @@ public final class ReadyReporter {
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()) + 1,
                 level);
         if (problems.isEmpty()) {
-            // Only the bundles started so far: the shell's level (and File Install's bundles) come after this line.
-            long started = Arrays.stream(bundles).filter(b -> BundleHealth.startLevel(b) <= level).count();
-            System.out.printf("fabric node: all %d bundles active in %d ms (start levels 1 to %d: the core, then "
-                    + "the edge and its REST API)%n", started, sinceJvmStart, level);
+            Census census = Census.of(bundles, level);
+            System.out.println(upLine(sinceJvmStart, level, census,
+                    whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                            context.getProperty(SHELL_ARGS), shell, census.installed() - census.running())));
         } else {
             System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
@@ -271,6 +370,57 @@ public final class ReadyReporter {
         } else if (last > framework.getStartLevel()) {
             framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
+    }
+
+    /**
+     * The ready line: {@code fabric node ready in 812 ms (JVM start to event bus up; start level 1: 37 of 41 bundles
+     * active, the other 4 start next); try ...}. Fragments and lazy bundles are counted apart (see {@link Census}),
+     * and the bundles of the higher levels are said to come next, so that a count below the number installed does
+     * not read as a failure.
+     */
+    static String readyLine(long millis, String waitedFor, int coreLevel, Census census, String howToUse) {
+        int later = census.installed() - census.running();
+        return String.format("fabric node ready in %d ms (JVM start to event bus%s up; start level %d: %s%s); %s",
+                millis, waitedFor, coreLevel, census.describe(),
+                later == 0 ? "" : ", " + theOthers(later) + " next", howToUse);
+    }
+
+    /**
+     * The second line, once every level below the shell's is up: {@code fabric node: start levels 1 and 2 up in
+     * 1724 ms (the core, then the edge and its REST API): 40 of 41 bundles active; then level 3: ...}.
+     */
+    static String upLine(long millis, int level, Census census, String whatIsNext) {
+        String levels = level == 1 ? "start level 1" : level == 2 ? "start levels 1 and 2" : "start levels 1 to " + level;
+        return String.format("fabric node: %s up in %d ms (the core, then the edge and its REST API): %s%s", levels,
+                millis, census.describe(), whatIsNext);
+    }
+
+    /**
+     * The end of the second line: the bundles not active yet (the shell, and bundles dropped in the config folder)
+     * and why they come last; a check run stops before them.
+     */
+    static String whatIsNext(boolean check, String shellArgs, int shellLevel, int later) {
+        if (shellLevel <= 0) {
+            return later == 0 ? "" : "; " + theOthers(later) + " next";
+        }
+        if (check) {
+            return "; a check run stops here, before level " + shellLevel + " (the Gogo shell)";
+        }
+        String others = "; " + theOthers(later) + " at level " + shellLevel + ": the Gogo shell";
+        if (noConsole(shellArgs)) {
+            return others + " (without a console: " + SHELL_ARGS + "=" + NO_INTERACTIVE + ")"
+                    + (later > 1 ? " and the config folder's bundles" : "");
+        }
+        return others + (later > 1 ? " and the config folder's bundles" : "")
+                + ", last so that its prompt follows this line";
+    }
+
+    private static String theOthers(int count) {
+        return count == 1 ? "the other one starts" : "the other " + count + " start";
+    }
+
+    private static boolean noConsole(String shellArgs) {
+        return shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE);
     }
 
     /** How the ready line names what it waited for besides the bus. */
@@ -295,7 +445,7 @@ public final class ReadyReporter {
         if (check) {
             return "check run: stops once every bundle is active";
         }
-        if (shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE)) {
+        if (noConsole(shellArgs)) {
             return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
         }
         return "try bus:behaviours, bus:publish, bis:list, bms:pending, edge:robots, lb; 'stop 0' quits";
