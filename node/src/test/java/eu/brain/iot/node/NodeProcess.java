@@ -92,6 +92,12 @@ final class NodeProcess implements AutoCloseable {
         process.destroy();
     }
 
+    /** Kills the node's JVM with SIGKILL, as {@code kill -9 <pid>} does: no shutdown hook runs; waits for its end. */
+    void kill() throws InterruptedException {
+        process.destroyForcibly();
+        awaitExit();
+    }
+
     @Override
     public void close() {
         process.destroyForcibly();
