@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -80,7 +78,8 @@ class BehavioursOnDemandNodeTest {
     }
 
     private NodeProcess start() throws Exception {
-        return NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort(),
+        return NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir,
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort(),
                 "-Dfabric.node.jul.levels=org.apache.aries.spifly=WARNING");
     }
 
@@ -90,9 +89,4 @@ class BehavioursOnDemandNodeTest {
         return Integer.parseInt(m.group(1));
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 }

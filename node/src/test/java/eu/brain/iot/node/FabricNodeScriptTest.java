@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -42,7 +40,7 @@ class FabricNodeScriptTest {
                 printf '[INFO] BUILD SUCCESS\\n\\033[0m\\033[0m'
                 """);
         Result result = run("--rebuild", "--check", "-Dfelix.fileinstall.dir=" + configDir,
-                "-Dorg.osgi.service.http.port=" + freePort());
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort());
         assertThat(result.code).as(result.output).isZero();
         assertThat(result.output).doesNotContain(ESC);
         List<String> lines = result.output.lines().toList();
@@ -92,9 +90,4 @@ class FabricNodeScriptTest {
         return new Result(process.exitValue(), new String(output, StandardCharsets.UTF_8));
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 }

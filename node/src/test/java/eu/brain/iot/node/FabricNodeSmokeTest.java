@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -34,7 +32,7 @@ class FabricNodeSmokeTest {
         Files.writeString(configDir.resolve("eu.brain.iot.eventing.cfg"), "queue.capacity=1234\n");
         TestBundles.write(configDir.resolve("extra.jar"), "test.extra", "Bundle-Name",
                 "Extra bundle dropped in the config folder");
-        int httpPort = freePort();
+        int httpPort = NodeProcess.freePort();
         try (NodeProcess node = NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir,
                 "-Dorg.osgi.service.http.port=" + httpPort)) {
             String started = node.awaitOutput(READY);
@@ -99,25 +97,20 @@ class FabricNodeSmokeTest {
     void aCheckRunWaitingForAServiceThatNeverComesGivesUpAtItsDeadline() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
                 "-Dfabric.node.ready.services=no.such.Service", "-Dfabric.node.check.timeout=3",
-                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
             assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isEqualTo(1);
-            assertThat(node.output()).contains("fabric node: check run gave up after 3 s (fabric.node.check.timeout=3), "
+            assertThat(node.output()).contains("fabric node: check run gave up after 3 s "
+                    + "(fabric.node.check.timeout=3), "
                     + "still waiting for: service no.such.Service (fabric.node.ready.services)")
                     .doesNotContain(READY);
         }
     }
 
-    /** A port free now, for the node's HTTP server, so that the test does not clash with a node already running. */
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 
     @Test
     void withoutAShellTheReadyLineSaysHowToStopTheNode() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dgosh.args=--nointeractive",
-                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
             String started = node.awaitOutput(ALL_ACTIVE);
             assertThat(started).contains("no shell (gosh.args=--nointeractive): stop it with Ctrl-C or kill "
                     + node.pid()).doesNotContain("'stop 0'").doesNotContain("WITH PROBLEMS");
@@ -130,14 +123,15 @@ class FabricNodeSmokeTest {
     @Test
     void checkModePrintsTheStartupTimeAndExitsWithZero() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
-                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
             assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isZero();
             assertThat(node.output())
                     .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up; start level 1: \\d+ of \\d+ "
                             + "bundles active, the other \\d+ start next\\); check run")
                     .containsPattern(ALL_ACTIVE + "\\d+ ms [^\\n]*: (\\d+) of (\\d+) bundles active; a check run "
                             + "stops here, before level 3 \\(the Gogo shell\\)")
-                    .as("no shell in check mode").doesNotContain("Welcome to Apache Felix Gogo").doesNotContain("Exception")
+                    .as("no shell in check mode").doesNotContain("Welcome to Apache Felix Gogo")
+                    .doesNotContain("Exception")
                     .as("SPI Fly's INFO lines are silenced (fabric.node.jul.levels)")
                     .doesNotContain("Registered provider");
         }

@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.io.IOException;
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.List;
@@ -59,7 +57,7 @@ class FrameworkCacheTest {
 
     private NodeProcess start(String mode) throws Exception {
         return NodeProcess.start(mode, "-Djava.io.tmpdir=" + tmp, "-Dfelix.fileinstall.dir=" + configDir,
-                "-Dorg.osgi.service.http.port=" + freePort());
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort());
     }
 
     /** The cache whose marker names the node's process. */
@@ -79,9 +77,4 @@ class FrameworkCacheTest {
         }
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 }

@@ -53,7 +53,8 @@ class NodeLogTest {
                         "-Dorg.slf4j.simpleLogger.log.org.eclipse.jetty.server.Server=info")) {
             // Felix HTTP's error about the port, then Jetty's own line at the level asked for (slf4j-simple)
             assertThat(node.awaitOutput("Address already in use"))
-                    .containsPattern("\\d\\d:\\d\\d:\\d\\d\\.\\d{3} ERROR org\\.apache\\.felix\\.http - Failed to start "
+                    .containsPattern("\\d\\d:\\d\\d:\\d\\d\\.\\d{3} ERROR org\\.apache\\.felix\\.http - "
+                            + "Failed to start "
                             + "Connector")
                     .containsPattern("\\d{3} INFO org\\.eclipse\\.jetty\\.server\\.Server - jetty-11")
                     .doesNotContain("SLF4J");
@@ -63,7 +64,7 @@ class NodeLogTest {
     /** A node without a shell whose edge polls a port where nothing listens (a socket bound, never accepting). */
     private NodeProcess start(String... more) throws Exception {
         return NodeProcess.start(concat(more, "-Dgosh.args=--nointeractive", "-Dfelix.fileinstall.dir=" + configDir,
-                "-Dorg.osgi.service.http.port=" + freePort()));
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort()));
     }
 
     private Socket closedPort() throws Exception {
@@ -87,9 +88,4 @@ class NodeLogTest {
         return all;
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 }

@@ -52,9 +52,10 @@ import eu.brain.iot.eventing.api.EventBus;
  * the Bundle Installer, registered once its journal is restored, and the BMS's policy, both only when the installer
  * is configured: see {@link ReadyService}).
  * <p>
- * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
- * {@link #lastLevel} and {@link #shellLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
- * own threads (each service event of a ready service looks again).
+ * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel},
+ * {@link #lastLevel} and {@link #shellLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the
+ * framework calls in from its own threads (each service event of a ready service looks again), and a check run's
+ * deadline from its own ({@link #deadline}).
  */
 @Component
 public final class ReadyReporter {
@@ -80,9 +81,8 @@ public final class ReadyReporter {
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
     private static final String SHELL = "org.apache.felix.gogo.shell";
-    /** The Gogo shell's arguments (a framework property); with {@value #NO_INTERACTIVE} it reads no console. */
-    private static final String SHELL_ARGS = "gosh.args";
-    private static final String NO_INTERACTIVE = "--nointeractive";
+    /** The Gogo shell's arguments (a framework property). */
+    private static final String SHELL_ARGS = ReadyLines.SHELL_ARGS;
 
     private final BundleContext context;
     private final long jvmStartMillis = ManagementFactory.getRuntimeMXBean().getStartTime();
@@ -248,8 +248,8 @@ public final class ReadyReporter {
         int core = BundleHealth.startLevel(context.getBundle());
         List<String> problems = BundleHealth.problems(bundles, core);
         if (problems.isEmpty()) {
-            System.out.println(readyLine(sinceJvmStart, waitedFor(), core, Census.of(bundles, core),
-                    howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+            System.out.println(ReadyLines.readyLine(sinceJvmStart, waitedFor(), core, Census.of(bundles, core),
+                    ReadyLines.howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), ProcessHandle.current().pid())));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -329,7 +329,7 @@ public final class ReadyReporter {
                 names.add(service.name());
             }
         }
-        return names.isEmpty() ? "" : " and " + describe(names);
+        return names.isEmpty() ? "" : " and " + ReadyLines.describe(names);
     }
 
     /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
@@ -358,8 +358,8 @@ public final class ReadyReporter {
                 level);
         if (problems.isEmpty()) {
             Census census = Census.of(bundles, level);
-            System.out.println(upLine(sinceJvmStart, level, census,
-                    whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+            System.out.println(ReadyLines.upLine(sinceJvmStart, level, census,
+                    ReadyLines.whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), shell, census.installed() - census.running())));
         } else {
             System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -370,85 +370,6 @@ public final class ReadyReporter {
         } else if (last > framework.getStartLevel()) {
             framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
-    }
-
-    /**
-     * The ready line: {@code fabric node ready in 812 ms (JVM start to event bus up; start level 1: 37 of 41 bundles
-     * active, the other 4 start next); try ...}. Fragments and lazy bundles are counted apart (see {@link Census}),
-     * and the bundles of the higher levels are said to come next, so that a count below the number installed does
-     * not read as a failure.
-     */
-    static String readyLine(long millis, String waitedFor, int coreLevel, Census census, String howToUse) {
-        int later = census.installed() - census.running();
-        return String.format("fabric node ready in %d ms (JVM start to event bus%s up; start level %d: %s%s); %s",
-                millis, waitedFor, coreLevel, census.describe(),
-                later == 0 ? "" : ", " + theOthers(later) + " next", howToUse);
-    }
-
-    /**
-     * The second line, once every level below the shell's is up: {@code fabric node: start levels 1 and 2 up in
-     * 1724 ms (the core, then the edge and its REST API): 40 of 41 bundles active; then level 3: ...}.
-     */
-    static String upLine(long millis, int level, Census census, String whatIsNext) {
-        String levels = level == 1 ? "start level 1" : level == 2 ? "start levels 1 and 2" : "start levels 1 to " + level;
-        return String.format("fabric node: %s up in %d ms (the core, then the edge and its REST API): %s%s", levels,
-                millis, census.describe(), whatIsNext);
-    }
-
-    /**
-     * The end of the second line: the bundles not active yet (the shell, and bundles dropped in the config folder)
-     * and why they come last; a check run stops before them.
-     */
-    static String whatIsNext(boolean check, String shellArgs, int shellLevel, int later) {
-        if (shellLevel <= 0) {
-            return later == 0 ? "" : "; " + theOthers(later) + " next";
-        }
-        if (check) {
-            return "; a check run stops here, before level " + shellLevel + " (the Gogo shell)";
-        }
-        String others = "; " + theOthers(later) + " at level " + shellLevel + ": the Gogo shell";
-        if (noConsole(shellArgs)) {
-            return others + " (without a console: " + SHELL_ARGS + "=" + NO_INTERACTIVE + ")"
-                    + (later > 1 ? " and the config folder's bundles" : "");
-        }
-        return others + (later > 1 ? " and the config folder's bundles" : "")
-                + ", last so that its prompt follows this line";
-    }
-
-    private static String theOthers(int count) {
-        return count == 1 ? "the other one starts" : "the other " + count + " start";
-    }
-
-    private static boolean noConsole(String shellArgs) {
-        return shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE);
-    }
-
-    /** How the ready line names what it waited for besides the bus. */
-    static String describe(List<String> services) {
-        List<String> names = new java.util.ArrayList<>();
-        for (String service : services) {
-            names.add(switch (service) {
-            case "eu.brain.iot.bis.api.BundleInstaller" -> "behaviour installer (journal restored)";
-            case "eu.brain.iot.eventing.spi.UnhandledEventPolicy" -> "behaviour management";
-            default -> service.substring(service.lastIndexOf('.') + 1);
-            });
-        }
-        return String.join(" and ", names);
-    }
-
-    /**
-     * The end of the ready line: what to type, and how to stop the node. Without an interactive shell (the Gogo
-     * shell's {@code --nointeractive}, as {@code ./fabric-node --no-shell} sets) there is nothing to type into:
-     * the node runs until its process is stopped.
-     */
-    static String howToUse(boolean check, String shellArgs, long pid) {
-        if (check) {
-            return "check run: stops once every bundle is active";
-        }
-        if (noConsole(shellArgs)) {
-            return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
-        }
-        return "try bus:behaviours, bus:publish, bis:list, bms:pending, edge:robots, lb; 'stop 0' quits";
     }
 
     private void exitWith(int status) {
