@@ -1,13 +1,19 @@
 package eu.brain.iot.node;
 
 import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
 
 import java.net.InetAddress;
 import java.net.InetSocketAddress;
 import java.net.ServerSocket;
 import java.net.Socket;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.Duration;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -34,6 +40,41 @@ class NodeLogTest {
                     .containsPattern("\\d\\d:\\d\\d:\\d\\d\\.\\d{3}" + UNREACHABLE)
                     .as("framework events stay out of the console").doesNotContain("BundleEvent")
                     .doesNotContain("SLF4J");
+        }
+    }
+
+    /**
+     * With the simulated fleet (robot-sim's jar, built before the node): a robot taken offline is reported unreachable
+     * (WARN), and its recovery at INFO, both on the console.
+     */
+    @Test
+    void aRobotsLossAndRecoveryReachTheConsole() throws Exception {
+        Path simJar = Path.of("..", "robot-sim", "target", "robot-sim.jar");
+        assertThat(simJar).as("robot-sim's jar, built before the node by 'mvn -pl node -am verify'").isRegularFile();
+        int simPort = NodeProcess.freePort();
+        Process sim = new ProcessBuilder(Path.of(System.getProperty("java.home"), "bin", "java").toString(), "-jar",
+                simJar.toString(), "--port", String.valueOf(simPort)).redirectErrorStream(true)
+                .redirectOutput(configDir.resolve("robot-sim.log").toFile()).start();
+        try {
+            await("robot-sim listening").atMost(NodeProcess.DEADLINE).pollInterval(Duration.ofMillis(100))
+                    .until(() -> Files.readString(configDir.resolve("robot-sim.log")).contains("listening on"));
+            Files.writeString(configDir.resolve("eu.brain.iot.edge.cfg"), "fleet.url=" + fleetUrl(simPort) + "\n");
+            try (NodeProcess node = start()) {
+                node.awaitOutput(" INFO " + EDGE + "fleet at " + fleetUrl(simPort));
+                HttpClient http = HttpClient.newHttpClient();
+                URI fault = URI.create(fleetUrl(simPort) + "admin/faults/robot1");
+                http.send(HttpRequest.newBuilder(fault).header("Content-Type", "application/json")
+                        .POST(HttpRequest.BodyPublishers.ofString("{\"offline\":true}")).build(),
+                        HttpResponse.BodyHandlers.discarding());
+                node.awaitOutput(" WARN " + EDGE + "robot robot1 is unreachable after ");
+                http.send(HttpRequest.newBuilder(fault).header("Content-Type", "application/json").DELETE().build(),
+                        HttpResponse.BodyHandlers.discarding());
+                assertThat(node.awaitOutput(" INFO " + EDGE + "robot robot1 answers again after "))
+                        .containsPattern("\\d{3} INFO " + EDGE + "robot robot1 answers again after \\d+ ms");
+            }
+        } finally {
+            sim.destroy();
+            sim.waitFor();
         }
     }
 
