@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
@@ -25,7 +23,8 @@ class BehavioursOnDemandNodeTest {
     private static final String READY = "fabric node ready in ";
     private static final String DOOR_EVENT = "eu.brain.iot.behaviours.events.ConnectorTypeDoor";
     private static final Path REPOSITORY = Path.of("..", "repository", "target").toAbsolutePath().normalize();
-    private static final Pattern INSTALLED_COUNT = Pattern.compile(READY + "\\d+ ms \\([^,]*, (\\d+) bundles installed");
+    private static final Pattern INSTALLED_COUNT = Pattern.compile(
+            READY + "\\d+ ms \\([^;]*; start level 1: \\d+ of (\\d+) bundles active");
 
     @TempDir
     Path configDir;
@@ -79,7 +78,8 @@ class BehavioursOnDemandNodeTest {
     }
 
     private NodeProcess start() throws Exception {
-        return NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort(),
+        return NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir,
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort(),
                 "-Dfabric.node.jul.levels=org.apache.aries.spifly=WARNING");
     }
 
@@ -89,9 +89,4 @@ class BehavioursOnDemandNodeTest {
         return Integer.parseInt(m.group(1));
     }
 
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
-        }
-    }
 }

@@ -3,8 +3,6 @@ package eu.brain.iot.node;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.net.InetAddress;
-import java.net.ServerSocket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -24,7 +22,7 @@ import org.junit.jupiter.api.io.TempDir;
 class FabricNodeSmokeTest {
 
     private static final String READY = "fabric node ready in ";
-    private static final String ALL_ACTIVE = "fabric node: all ";
+    private static final String ALL_ACTIVE = "fabric node: start levels 1 and 2 up in ";
 
     @TempDir
     Path configDir;
@@ -34,14 +32,16 @@ class FabricNodeSmokeTest {
         Files.writeString(configDir.resolve("eu.brain.iot.eventing.cfg"), "queue.capacity=1234\n");
         TestBundles.write(configDir.resolve("extra.jar"), "test.extra", "Bundle-Name",
                 "Extra bundle dropped in the config folder");
-        int httpPort = freePort();
+        int httpPort = NodeProcess.freePort();
         try (NodeProcess node = NodeProcess.start("-Dfelix.fileinstall.dir=" + configDir,
                 "-Dorg.osgi.service.http.port=" + httpPort)) {
             String started = node.awaitOutput(READY);
             assertThat(started).doesNotContain("WITH PROBLEMS").doesNotContain("Exception");
             // then the edge and Felix HTTP start; the Gogo shell comes after both lines, so its prompt is last
             String prompted = node.awaitOutput("g! ");
-            assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms");
+            assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ ms \\(the core, then the edge and its REST API\\): "
+                    + "\\d+ of \\d+ bundles active; the other (one starts|\\d+ start) at level 3: the Gogo shell"
+                    + "( and the config folder's bundles)?, last so that its prompt follows this line");
             assertThat(prompted.indexOf("g! ")).isGreaterThan(prompted.indexOf(ALL_ACTIVE))
                     .isGreaterThan(prompted.indexOf(READY));
 
@@ -93,35 +93,45 @@ class FabricNodeSmokeTest {
         }
     }
 
-    /** A port free now, for the node's HTTP server, so that the test does not clash with a node already running. */
-    private static int freePort() throws Exception {
-        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
-            return socket.getLocalPort();
+    @Test
+    void aCheckRunWaitingForAServiceThatNeverComesGivesUpAtItsDeadline() throws Exception {
+        try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
+                "-Dfabric.node.ready.services=no.such.Service", "-Dfabric.node.check.timeout=3",
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
+            assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isEqualTo(1);
+            assertThat(node.output()).contains("fabric node: check run gave up after 3 s "
+                    + "(fabric.node.check.timeout=3), "
+                    + "still waiting for: service no.such.Service (fabric.node.ready.services)")
+                    .doesNotContain(READY);
         }
     }
+
 
     @Test
     void withoutAShellTheReadyLineSaysHowToStopTheNode() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dgosh.args=--nointeractive",
-                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
             String started = node.awaitOutput(ALL_ACTIVE);
             assertThat(started).contains("no shell (gosh.args=--nointeractive): stop it with Ctrl-C or kill "
                     + node.pid()).doesNotContain("'stop 0'").doesNotContain("WITH PROBLEMS");
             node.terminate();
             assertThat(node.awaitExit()).as("exit code after SIGTERM; output:%n%s", node.output()).isEqualTo(143);
-            assertThat(node.output()).doesNotContain("Gogo").doesNotContain("Exception");
+            assertThat(node.output()).doesNotContain("Welcome to Apache Felix Gogo").doesNotContain("Exception");
         }
     }
 
     @Test
     void checkModePrintsTheStartupTimeAndExitsWithZero() throws Exception {
         try (NodeProcess node = NodeProcess.start("-Dfabric.node.exitWhenReady=true",
-                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + freePort())) {
+                "-Dfelix.fileinstall.dir=" + configDir, "-Dorg.osgi.service.http.port=" + NodeProcess.freePort())) {
             assertThat(node.awaitExit()).as("exit code; output:%n%s", node.output()).isZero();
             assertThat(node.output())
-                    .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up, \\d+ bundles installed\\)")
-                    .containsPattern(ALL_ACTIVE + "\\d+ bundles active in \\d+ ms")
-                    .as("no shell in check mode").doesNotContain("Gogo").doesNotContain("Exception")
+                    .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up; start level 1: \\d+ of \\d+ "
+                            + "bundles active, the other \\d+ start next\\); check run")
+                    .containsPattern(ALL_ACTIVE + "\\d+ ms [^\\n]*: (\\d+) of (\\d+) bundles active; a check run "
+                            + "stops here, before level 3 \\(the Gogo shell\\)")
+                    .as("no shell in check mode").doesNotContain("Welcome to Apache Felix Gogo")
+                    .doesNotContain("Exception")
                     .as("SPI Fly's INFO lines are silenced (fabric.node.jul.levels)")
                     .doesNotContain("Registered provider");
         }

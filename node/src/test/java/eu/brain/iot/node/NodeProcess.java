@@ -7,6 +7,8 @@ import java.io.InputStreamReader;
 import java.io.Reader;
 import java.io.UncheckedIOException;
 import java.io.Writer;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -51,6 +53,13 @@ final class NodeProcess implements AutoCloseable {
         return new NodeProcess(new ProcessBuilder(command).redirectErrorStream(true).start());
     }
 
+    /** A loopback port free now, for a node's HTTP server: a test does not clash with a node already running. */
+    static int freePort() throws IOException {
+        try (ServerSocket socket = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            return socket.getLocalPort();
+        }
+    }
+
     /** Types a line into the Gogo shell. */
     void type(String line) {
         try {
@@ -90,6 +99,12 @@ final class NodeProcess implements AutoCloseable {
     /** Sends the node's JVM SIGTERM, as {@code kill <pid>} does. */
     void terminate() {
         process.destroy();
+    }
+
+    /** Kills the node's JVM with SIGKILL, as {@code kill -9 <pid>} does: no shutdown hook runs; waits for its end. */
+    void kill() throws InterruptedException {
+        process.destroyForcibly();
+        awaitExit();
     }
 
     @Override

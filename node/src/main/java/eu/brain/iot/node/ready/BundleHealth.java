@@ -59,12 +59,12 @@ final class BundleHealth {
         return level == null ? 0 : level.getStartLevel();
     }
 
-    private static boolean isFragment(Bundle bundle) {
+    static boolean isFragment(Bundle bundle) {
         BundleRevision revision = bundle.adapt(BundleRevision.class);
         return revision != null && (revision.getTypes() & BundleRevision.TYPE_FRAGMENT) != 0;
     }
 
-    private static boolean isLazy(Bundle bundle) {
+    static boolean isLazy(Bundle bundle) {
         String policy = bundle.getHeaders("").get(Constants.BUNDLE_ACTIVATIONPOLICY);
         return policy != null && policy.startsWith(Constants.ACTIVATION_LAZY);
     }

@@ -2,11 +2,13 @@ package eu.brain.iot.node.ready;
 
 import java.io.IOException;
 import java.lang.management.ManagementFactory;
-import java.util.Arrays;
 import java.util.Dictionary;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.concurrent.Callable;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
@@ -50,9 +52,10 @@ import eu.brain.iot.eventing.api.EventBus;
  * the Bundle Installer, registered once its journal is restored, and the BMS's policy, both only when the installer
  * is configured: see {@link ReadyService}).
  * <p>
- * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel} and
- * {@link #lastLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the framework calls in from its
- * own threads (each service event of a ready service looks again).
+ * Ownership: {@link #buses}, {@link #launched}, {@link #reported}, {@link #coreHealthy}, {@link #fullLevel},
+ * {@link #lastLevel} and {@link #shellLevel} are guarded by {@code this}; {@link #readyServices} is immutable; the
+ * framework calls in from its own threads (each service event of a ready service looks again), and a check run's
+ * deadline from its own ({@link #deadline}).
  */
 @Component
 public final class ReadyReporter {
@@ -67,12 +70,19 @@ public final class ReadyReporter {
      */
     public static final String READY_SERVICES = "fabric.node.ready.services";
 
+    /**
+     * Framework (or system) property: how many seconds a check run ({@value #EXIT_WHEN_READY}) waits for both lines;
+     * then it says what it was still waiting for and exits with 1. A ready service that never comes (a behaviour
+     * installer without its index, say) would otherwise hang the check.
+     */
+    public static final String CHECK_TIMEOUT = "fabric.node.check.timeout";
+    static final long DEFAULT_CHECK_TIMEOUT_SECONDS = 120;
+
     private static final String LAUNCHER_READY = "(launcher.ready=true)";
     /** The shell reads the console: it starts last, and a check run stops before it. */
     private static final String SHELL = "org.apache.felix.gogo.shell";
-    /** The Gogo shell's arguments (a framework property); with {@value #NO_INTERACTIVE} it reads no console. */
-    private static final String SHELL_ARGS = "gosh.args";
-    private static final String NO_INTERACTIVE = "--nointeractive";
+    /** The Gogo shell's arguments (a framework property). */
+    private static final String SHELL_ARGS = ReadyLines.SHELL_ARGS;
 
     private final BundleContext context;
     private final long jvmStartMillis = ManagementFactory.getRuntimeMXBean().getStartTime();
@@ -87,8 +97,6 @@ public final class ReadyReporter {
     private final FrameworkListener frameworkListener = event -> {
         if (event.getType() == FrameworkEvent.STARTED) {
             launched();
-        } else if (event.getType() == FrameworkEvent.STARTLEVEL_CHANGED) {
-            levelReached();
         }
     };
 
@@ -100,6 +108,10 @@ public final class ReadyReporter {
     private int fullLevel;
     /** The level the node ends at: the shell's (or the initial bundle start level), not in a check. */
     private int lastLevel;
+    /** The Gogo shell's start level, 0 without a shell bundle. */
+    private int shellLevel;
+    /** A check run's deadline (its own daemon thread), {@code null} otherwise. */
+    private final ScheduledExecutorService deadline;
 
     @Activate
     public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
@@ -109,6 +121,17 @@ public final class ReadyReporter {
             StringBuilder filter = new StringBuilder("(|");
             readyServices.forEach(s -> filter.append("(objectClass=").append(s.name()).append(')'));
             context.addServiceListener(readyServicesListener, filter.append(')').toString());
+        }
+        if (Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY))) {
+            long seconds = checkTimeoutSeconds(context.getProperty(CHECK_TIMEOUT));
+            deadline = Executors.newSingleThreadScheduledExecutor(r -> {
+                Thread thread = new Thread(r, "fabric-node-check-deadline");
+                thread.setDaemon(true);
+                return thread;
+            });
+            deadline.schedule(() -> giveUp(seconds), seconds, TimeUnit.SECONDS);
+        } else {
+            deadline = null;
         }
         context.addFrameworkListener(frameworkListener);
         context.addServiceListener(launcherListener, LAUNCHER_READY);
@@ -122,6 +145,74 @@ public final class ReadyReporter {
         context.removeServiceListener(launcherListener);
         context.removeServiceListener(readyServicesListener);
         context.removeFrameworkListener(frameworkListener);
+        if (deadline != null) {
+            deadline.shutdownNow();
+        }
+    }
+
+    /** The check's deadline in seconds: the property's value, or the default when it is missing or not a number. */
+    static long checkTimeoutSeconds(String property) {
+        if (property == null || property.isBlank()) {
+            return DEFAULT_CHECK_TIMEOUT_SECONDS;
+        }
+        try {
+            long seconds = Long.parseLong(property.trim());
+            if (seconds > 0) {
+                return seconds;
+            }
+        } catch (NumberFormatException e) {
+            // below
+        }
+        System.out.printf("fabric node: %s=%s is not a number of seconds above 0; the check waits %d s%n",
+                CHECK_TIMEOUT, property, DEFAULT_CHECK_TIMEOUT_SECONDS);
+        return DEFAULT_CHECK_TIMEOUT_SECONDS;
+    }
+
+    /** A check run's deadline passed before both lines were out: say what is missing, and exit with 1. */
+    private void giveUp(long seconds) {
+        List<String> waiting;
+        synchronized (this) {
+            if (fullLevel < 0) {
+                return; // both lines are out (or on their way): the check ends by itself
+            }
+            waiting = waitingFor();
+            reported = true;
+            fullLevel = -1;
+        }
+        System.out.printf("fabric node: check run gave up after %d s (%s), still waiting for: %s%n", seconds,
+                CHECK_TIMEOUT + "=" + seconds, String.join("; ", waiting));
+        exitWith(1);
+    }
+
+    /** What the lines still wait for. Called under {@code this}. */
+    private List<String> waitingFor() {
+        List<String> waiting = new java.util.ArrayList<>();
+        if (!launched) {
+            waiting.add("the launcher to start every bundle of the first start level");
+        }
+        if (buses == 0) {
+            waiting.add("the event bus (" + EventBus.class.getName() + ")");
+        }
+        for (ReadyService service : readyServices) {
+            try {
+                if (required(service) && context.getServiceReferences(service.name(), null) == null) {
+                    waiting.add("service " + service.name() + " (" + READY_SERVICES + ")");
+                }
+            } catch (InvalidSyntaxException | IllegalStateException e) {
+                waiting.add("service " + service.name() + " (" + e.getMessage() + ")");
+            }
+        }
+        FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
+                .adapt(FrameworkStartLevel.class);
+        if (fullLevel > 0 && framework.getStartLevel() < fullLevel) {
+            waiting.add("start level " + fullLevel + " (at " + framework.getStartLevel() + ")");
+        }
+        int max = fullLevel > 0 ? fullLevel : BundleHealth.startLevel(context.getBundle());
+        waiting.addAll(BundleHealth.problems(context.getBundles(), max));
+        if (waiting.isEmpty()) {
+            waiting.add("the framework to report its start level (every bundle looks active)");
+        }
+        return waiting;
     }
 
     @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC, unbind = "busGone")
@@ -154,12 +245,12 @@ public final class ReadyReporter {
         }
         long sinceJvmStart = System.currentTimeMillis() - jvmStartMillis;
         Bundle[] bundles = context.getBundles();
-        List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()));
+        int core = BundleHealth.startLevel(context.getBundle());
+        List<String> problems = BundleHealth.problems(bundles, core);
         if (problems.isEmpty()) {
-            System.out.printf("fabric node ready in %d ms (JVM start to event bus%s up, %d bundles installed); %s%n",
-                    sinceJvmStart, waitedFor(), bundles.length,
-                    howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
-                            context.getProperty(SHELL_ARGS), ProcessHandle.current().pid()));
+            System.out.println(ReadyLines.readyLine(sinceJvmStart, waitedFor(), core, Census.of(bundles, core),
+                    ReadyLines.howToUse(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                            context.getProperty(SHELL_ARGS), ProcessHandle.current().pid())));
         } else {
             System.out.printf("fabric node started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
@@ -180,12 +271,18 @@ public final class ReadyReporter {
         FrameworkStartLevel framework = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION)
                 .adapt(FrameworkStartLevel.class);
         synchronized (this) {
+            if (fullLevel < 0) {
+                return; // a check run gave up meanwhile
+            }
             coreHealthy = problems.isEmpty();
             fullLevel = full;
+            shellLevel = shell;
             lastLevel = check ? full : Math.max(highest, framework.getInitialBundleStartLevel());
         }
         if (full > framework.getStartLevel()) {
-            framework.setStartLevel(full);
+            // told when this change is complete: a STARTLEVEL_CHANGED of an earlier change (the launcher's to level 1)
+            // may still be on its way, and the framework already reports the new level while starting its bundles
+            framework.setStartLevel(full, event -> levelReached());
         } else {
             levelReached();
         }
@@ -232,7 +329,7 @@ public final class ReadyReporter {
                 names.add(service.name());
             }
         }
-        return names.isEmpty() ? "" : " and " + describe(names);
+        return names.isEmpty() ? "" : " and " + ReadyLines.describe(names);
     }
 
     /** After a start level change: once every level but the shell's is up, say whether every bundle is active. */
@@ -241,6 +338,7 @@ public final class ReadyReporter {
                 .adapt(FrameworkStartLevel.class);
         int level;
         int last;
+        int shell;
         boolean core;
         synchronized (this) {
             if (fullLevel <= 0 || framework.getStartLevel() < fullLevel) {
@@ -248,6 +346,7 @@ public final class ReadyReporter {
             }
             level = fullLevel;
             last = lastLevel;
+            shell = shellLevel;
             fullLevel = -1;
             core = coreHealthy;
         }
@@ -258,10 +357,10 @@ public final class ReadyReporter {
         List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()) + 1,
                 level);
         if (problems.isEmpty()) {
-            // Only the bundles started so far: the shell's level (and File Install's bundles) come after this line.
-            long started = Arrays.stream(bundles).filter(b -> BundleHealth.startLevel(b) <= level).count();
-            System.out.printf("fabric node: all %d bundles active in %d ms (start levels 1 to %d: the core, then "
-                    + "the edge and its REST API)%n", started, sinceJvmStart, level);
+            Census census = Census.of(bundles, level);
+            System.out.println(ReadyLines.upLine(sinceJvmStart, level, census,
+                    ReadyLines.whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+                            context.getProperty(SHELL_ARGS), shell, census.installed() - census.running())));
         } else {
             System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
                     String.join("; ", problems));
@@ -271,34 +370,6 @@ public final class ReadyReporter {
         } else if (last > framework.getStartLevel()) {
             framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
-    }
-
-    /** How the ready line names what it waited for besides the bus. */
-    static String describe(List<String> services) {
-        List<String> names = new java.util.ArrayList<>();
-        for (String service : services) {
-            names.add(switch (service) {
-            case "eu.brain.iot.bis.api.BundleInstaller" -> "behaviour installer (journal restored)";
-            case "eu.brain.iot.eventing.spi.UnhandledEventPolicy" -> "behaviour management";
-            default -> service.substring(service.lastIndexOf('.') + 1);
-            });
-        }
-        return String.join(" and ", names);
-    }
-
-    /**
-     * The end of the ready line: what to type, and how to stop the node. Without an interactive shell (the Gogo
-     * shell's {@code --nointeractive}, as {@code ./fabric-node --no-shell} sets) there is nothing to type into:
-     * the node runs until its process is stopped.
-     */
-    static String howToUse(boolean check, String shellArgs, long pid) {
-        if (check) {
-            return "check run: stops once every bundle is active";
-        }
-        if (shellArgs != null && List.of(shellArgs.trim().split("\\s+")).contains(NO_INTERACTIVE)) {
-            return "no shell (" + SHELL_ARGS + "=" + NO_INTERACTIVE + "): stop it with Ctrl-C or kill " + pid;
-        }
-        return "try bus:behaviours, bus:publish, bis:list, bms:pending, edge:robots, lb; 'stop 0' quits";
     }
 
     private void exitWith(int status) {

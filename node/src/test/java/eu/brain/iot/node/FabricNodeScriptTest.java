@@ -1,0 +1,93 @@
+package eu.brain.iot.node;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.io.IOException;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * What {@code ./fabric-node} itself prints while it builds, with a stand-in for {@code mvn} (first on the PATH) that
+ * writes what Debian's Maven 3.8.7 writes: colour resets (ESC[0m) even with -B, no newline at its end, the module
+ * lines and, on a first build, download lines. The script's lines carry no escape code, each starts a line, and a
+ * failed build shows Maven's errors and exits with 1.
+ */
+class FabricNodeScriptTest {
+
+    private static final Path SCRIPT = Path.of("..", "fabric-node").toAbsolutePath().normalize();
+    private static final String ESC = "\u001b";
+
+    @TempDir
+    Path bin;
+    @TempDir
+    Path configDir;
+
+    @Test
+    void aFirstBuildSaysWhatItBuildsThatItDownloadsAndHowLongItTook() throws Exception {
+        fakeMaven(0, """
+                printf '\\033[0m\\033[0m[INFO] Scanning for projects...\\n'
+                printf '[INFO] Building BRAIN-IoT fabric 0.1.0-SNAPSHOT                    [1/2]\\n'
+                printf '[INFO] Downloading from central: https://repo.maven.apache.org/x.pom\\n'
+                printf '[INFO] Downloaded from central: https://repo.maven.apache.org/x.pom (2 kB at 9 kB/s)\\n'
+                printf '[INFO] Building BRAIN-IoT fabric: runnable fabric node 0.1.0-SNAPSHOT [2/2]\\n'
+                printf '[INFO] BUILD SUCCESS\\n\\033[0m\\033[0m'
+                """);
+        Result result = run("--rebuild", "--check", "-Dfelix.fileinstall.dir=" + configDir,
+                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort());
+        assertThat(result.code).as(result.output).isZero();
+        assertThat(result.output).doesNotContain(ESC);
+        List<String> lines = result.output.lines().toList();
+        assertThat(lines.get(0)).startsWith("fabric-node: building node and the modules it needs (mvn -B -pl node -am "
+                + "package -DskipTests; log: node/target/fabric-node-build.log)");
+        assertThat(lines.get(1)).startsWith("fabric-node: first build here: Maven downloads");
+        assertThat(lines.get(2)).matches("fabric-node: built in \\d+ s \\(1 file downloaded\\)");
+        assertThat(result.output).containsPattern("(?m)^fabric node ready in ");
+    }
+
+    @Test
+    void aFailedBuildShowsMavensErrorsAndExitsWith1() throws Exception {
+        fakeMaven(1, """
+                printf '[INFO] Building BRAIN-IoT fabric: event bus 0.1.0-SNAPSHOT [1/2]\\n'
+                printf '\\033[1;31m[ERROR]\\033[m Failed to execute goal on project eventbus: Compilation failure\\n'
+                printf '[ERROR] -> [Help 1]\\n\\033[0m'
+                """);
+        Result result = run("--rebuild", "--check", "-Dfelix.fileinstall.dir=" + configDir);
+        assertThat(result.code).as(result.output).isEqualTo(1);
+        assertThat(result.output).doesNotContain(ESC).doesNotContain("[Help 1]").containsPattern(
+                "(?m)^fabric-node: the build failed \\(mvn exit code 1\\).*\\n  \\[ERROR\\] Failed to execute goal on "
+                        + "project eventbus: Compilation failure$")
+                .doesNotContain("fabric node ready");
+    }
+
+    private void fakeMaven(int exitCode, String body) throws IOException {
+        Path mvn = bin.resolve("mvn");
+        Files.writeString(mvn, "#!/bin/sh\n" + body + "exit " + exitCode + "\n");
+        Files.setPosixFilePermissions(mvn, PosixFilePermissions.fromString("rwxr-xr-x"));
+    }
+
+    private record Result(int code, String output) {
+    }
+
+    private Result run(String... args) throws Exception {
+        List<String> command = new java.util.ArrayList<>(List.of("bash", SCRIPT.toString()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
+        builder.environment().put("PATH", bin + ":" + System.getenv("PATH"));
+        Process process = builder.start();
+        byte[] output = process.getInputStream().readAllBytes();
+        if (!process.waitFor(NodeProcess.DEADLINE.toSeconds(), TimeUnit.SECONDS)) {
+            process.destroyForcibly();
+            throw new AssertionError("the script did not end; output:\n" + new String(output, StandardCharsets.UTF_8));
+        }
+        return new Result(process.exitValue(), new String(output, StandardCharsets.UTF_8));
+    }
+
+}
