@@ -1,9 +1,12 @@
 package eu.brain.iot.edge.rest;
 
 import java.io.IOException;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
@@ -35,6 +38,12 @@ public final class SensinactServlet extends HttpServlet {
     private final transient Reads reads;
     private final transient Acts acts;
     private final transient Logger log;
+    /** Body deadlines of ACTs; never waits on anything. */
+    private final transient ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "edge-rest-timer");
+        t.setDaemon(true);
+        return t;
+    });
 
     @Activate
     public SensinactServlet(@Reference DeviceModel model, RestConfig config,
@@ -42,7 +51,13 @@ public final class SensinactServlet extends HttpServlet {
         this.log = log;
         this.reads = new Reads(model);
         this.acts = new Acts(model, positive("act.timeout.ms", config.act_timeout_ms()),
-                (int) positive("act.max.body.bytes", config.act_max_body_bytes()), log);
+                (int) positive("act.max.body.bytes", config.act_max_body_bytes()),
+                positive("act.body.timeout.ms", config.act_body_timeout_ms()), timer, log);
+    }
+
+    @Deactivate
+    void deactivate() {
+        timer.shutdownNow();
     }
 
     static long positive(String property, long value) {

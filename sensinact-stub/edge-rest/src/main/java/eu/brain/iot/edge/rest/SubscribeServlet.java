@@ -43,6 +43,7 @@ public final class SubscribeServlet extends HttpServlet {
     private final transient DeviceModel model;
     private final transient Logger log;
     private final int capacity;
+    private final long writeTimeoutMillis;
     private final transient Set<SseClient> clients = ConcurrentHashMap.newKeySet();
     private final transient ScheduledExecutorService writer = Executors.newSingleThreadScheduledExecutor(r -> {
         Thread t = new Thread(r, "edge-sse");
@@ -57,7 +58,12 @@ public final class SubscribeServlet extends HttpServlet {
         this.log = log;
         this.capacity = (int) SensinactServlet.positive("sse.queue.capacity", config.sse_queue_capacity());
         long heartbeat = SensinactServlet.positive("sse.heartbeat.ms", config.sse_heartbeat_ms());
+        this.writeTimeoutMillis = SensinactServlet.positive("sse.write.timeout.ms", config.sse_write_timeout_ms());
         writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::heartbeat), heartbeat, heartbeat,
+                TimeUnit.MILLISECONDS);
+        // a client that stopped reading is found within a quarter of the write timeout after it expires
+        long check = Math.max(10, writeTimeoutMillis / 4);
+        writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::checkStalled), check, check,
                 TimeUnit.MILLISECONDS);
     }
 
@@ -74,9 +80,20 @@ public final class SubscribeServlet extends HttpServlet {
                 throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
                         "a stream of changes as text/event-stream");
             }
-            String provider = parameter(req, "provider");
-            String service = parameter(req, "service");
-            checkQuery(req);
+            String provider;
+            String service;
+            try {
+                provider = parameter(req, "provider");
+                service = parameter(req, "service");
+                checkQuery(req);
+            } catch (HttpError e) {
+                throw e;
+            } catch (RuntimeException e) {
+                // Jetty decodes the query lazily and throws (a BadMessageException) on bytes that are not UTF-8
+                throw HttpError.about(400, "query", "the query string is not valid percent-encoded UTF-8 ("
+                        + e.getMessage() + "); encode provider and service names as UTF-8, e.g. "
+                        + "?provider=robot1&service=position");
+            }
             if (provider != null && model.provider(provider).isEmpty()) {
                 throw HttpError.notFound("no provider '" + provider + "'; providers: "
                         + model.providers().stream().map(ProviderSnapshot::id).toList());
@@ -98,7 +115,8 @@ public final class SubscribeServlet extends HttpServlet {
         String filter = "provider=" + (provider == null ? "*" : provider) + ", service="
                 + (service == null ? "*" : service);
         String who = req.getRemoteAddr() + ":" + req.getRemotePort() + " (" + filter + ")";
-        SseClient client = new SseClient(async, writer, capacity, who, log, clients::remove);
+        SseClient client = new SseClient(async, writer, capacity, writeTimeoutMillis, who, log,
+                clients::remove);
         clients.add(client);
         client.start("subscribed to " + filter, listener -> model.subscribe(provider, service, listener));
         log.debug("SSE client " + who + " subscribed");
