@@ -10,6 +10,7 @@ import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.TimeoutException;
 import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicReference;
 
 import org.osgi.service.log.Logger;
 
@@ -87,26 +88,38 @@ final class Acts {
             public void onStartAsync(AsyncEvent event) {
             }
         });
-        BodyReader[] reader = new BodyReader[1];
-        ScheduledFuture<?> deadline = timer.schedule(() -> {
-            if (reader[0].abandon()) {
-                HttpError e = HttpError.closing(408, "body", "the body did not arrive within " + bodyTimeoutMillis
-                        + " ms (act.body.timeout.ms); send the whole request at once");
-                startQuietly(async, () -> answer(async, answered, e));
-            }
-        }, bodyTimeoutMillis, TimeUnit.MILLISECONDS);
-        reader[0] = new BodyReader(req.getInputStream(), maxBodyBytes, body -> {
-            deadline.cancel(false);
+        AtomicReference<ScheduledFuture<?>> deadline = new AtomicReference<>();
+        BodyReader reader = new BodyReader(req.getInputStream(), maxBodyBytes, body -> {
+            cancel(deadline);
             try {
                 run(r, body, async, answered);
             } catch (HttpError e) {
                 answer(async, answered, e);
+            } catch (RuntimeException e) {
+                // A bug of ours: the log gets the stack trace, the caller a short message.
+                log.error("internal error on ACT " + r.path(), e);
+                answer(async, answered, new HttpError(500, "internal error of the edge (" + e.getClass().getSimpleName()
+                        + "); the node's log (Gogo: log error) has the details"));
             }
         }, e -> {
-            deadline.cancel(false);
+            cancel(deadline);
             answer(async, answered, e);
         });
-        reader[0].start();
+        deadline.set(timer.schedule(() -> {
+            if (reader.abandon()) {
+                HttpError e = HttpError.closing(408, "body", "the body did not arrive within " + bodyTimeoutMillis
+                        + " ms (act.body.timeout.ms); send the whole request at once");
+                startQuietly(async, () -> answer(async, answered, e));
+            }
+        }, bodyTimeoutMillis, TimeUnit.MILLISECONDS));
+        reader.start();
+    }
+
+    private static void cancel(AtomicReference<ScheduledFuture<?>> deadline) {
+        ScheduledFuture<?> f = deadline.get();
+        if (f != null) {
+            f.cancel(false);
+        }
     }
 
     /** The body is all there: parse it, run the action, answer when the device does (on a container thread). */

@@ -76,7 +76,8 @@ public final class SubscribeServlet extends HttpServlet {
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         try {
-            if (!req.getMethod().equals("GET")) {
+            boolean head = req.getMethod().equals("HEAD");
+            if (!req.getMethod().equals("GET") && !head) {
                 throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
                         "a stream of changes as text/event-stream");
             }
@@ -97,6 +98,14 @@ public final class SubscribeServlet extends HttpServlet {
             if (provider != null && model.provider(provider).isEmpty()) {
                 throw HttpError.notFound("no provider '" + provider + "'; providers: "
                         + model.providers().stream().map(ProviderSnapshot::id).toList());
+            }
+            if (head) {
+                // what a GET would answer, without the stream (and without a subscription)
+                resp.setStatus(200);
+                resp.setContentType("text/event-stream");
+                resp.setCharacterEncoding("UTF-8");
+                resp.setHeader("Cache-Control", "no-store");
+                return;
             }
             open(req, resp, provider, service);
         } catch (HttpError e) {

@@ -55,6 +55,13 @@ class ErrorFormatIntegrationTest extends RestTestBase {
             assertThat(head.headers().firstValue("Content-Type")).hasValueSatisfying(
                     t -> assertThat(t).startsWith("application/json"));
         }
+        HttpResponse<Void> stream = HTTP.send(HttpRequest.newBuilder(uri("/sensinact/subscribe?provider=robot1"))
+                .timeout(Duration.ofSeconds(15)).method("HEAD", HttpRequest.BodyPublishers.noBody()).build(),
+                HttpResponse.BodyHandlers.discarding());
+        assertThat(stream.statusCode()).isEqualTo(200);
+        assertThat(stream.headers().firstValue("Content-Type")).hasValueSatisfying(
+                t -> assertThat(t).startsWith("text/event-stream"));
+        assertThat(model.subscribers()).isZero();
         RawHttp.Answer a = raw("HEAD /sensinact/providers/robot9 HTTP/1.1\r\n" + RawHttp.host(base), null);
         assertThat(a.status()).isEqualTo(404);
         assertThat(a.body()).isEmpty();
