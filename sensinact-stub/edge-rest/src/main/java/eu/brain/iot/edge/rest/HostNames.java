@@ -9,6 +9,8 @@ import java.util.TreeSet;
  * reaching the API through DNS rebinding or cross-site requests: the loopback names, the bound address, and the
  * configured {@code allowed.hosts}, each with the port the request came in on. Names are compared without case; a
  * {@code Host} without a port means port 80.
+ * <p>
+ * Threads: immutable after construction, read by any number of container threads.
  */
 final class HostNames {
 
