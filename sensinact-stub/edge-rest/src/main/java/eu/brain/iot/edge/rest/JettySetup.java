@@ -45,6 +45,7 @@ public final class JettySetup implements ConnectorFactory {
 
     @Override
     public synchronized Connector createConnector(Server server) {
+        org.eclipse.jetty.server.handler.ErrorHandler before = server.getErrorHandler();
         server.setErrorHandler(new JsonErrorHandler());
         Connector[] network = Arrays.stream(server.getConnectors()).filter(c -> !(c instanceof LocalConnector))
                 .toArray(Connector[]::new);
@@ -61,6 +62,8 @@ public final class JettySetup implements ConnectorFactory {
             }
         }
         undo.add(() -> {
+            // Jetty keeps running when this bundle stops: it must not keep a handler of a bundle that may go away
+            server.setErrorHandler(before);
             try {
                 total.stop();
             } catch (Exception e) {

@@ -28,7 +28,7 @@ import org.junit.jupiter.api.Test;
 class AbuseIntegrationTest extends RestTestBase {
 
     /** How long a well-behaved client may wait for an answer while others abuse the API. */
-    static final Duration PATIENCE = Duration.ofSeconds(3);
+    static final Duration PATIENCE = Duration.ofSeconds(5);
     private static final String ACT = "/sensinact/providers/door1/services/control/resources/open/act";
 
     /** Another client: reads, an ACT and a new SSE stream, each answered within {@link #PATIENCE}. */
