@@ -36,12 +36,17 @@ import jakarta.servlet.http.HttpServletResponse;
  * Threads: container threads, any number at once; every field is immutable after activation or thread-safe.
  */
 @Component(service = Filter.class, configurationPid = RestConfig.PID)
-@HttpWhiteboardFilterName("eu.brain.iot.edge.rest.gate")
+@HttpWhiteboardFilterName(RequestGate.NAME)
 @HttpWhiteboardFilterPattern({ Route.ROOT, Route.ROOT + "/*" })
 @HttpWhiteboardFilterAsyncSupported // the servlets behind it answer asynchronously
 public final class RequestGate implements Filter {
 
     static final String SESSION = Route.ROOT + "/session";
+    static final String NAME = "eu.brain.iot.edge.rest.gate";
+    /** The filter's property, for the servlets' reference: they start only once the gate is there. */
+    static final String TARGET = "(osgi.http.whiteboard.filter.name=" + NAME + ")";
+    /** Request attribute: the request passed this gate. */
+    private static final String PASSED = RequestGate.class.getName() + ".passed";
 
     private final HostNames hosts;
     private final String bind;
@@ -119,6 +124,7 @@ public final class RequestGate implements Filter {
         HttpServletResponse resp = (HttpServletResponse) response;
         try {
             check(req);
+            req.setAttribute(PASSED, Boolean.TRUE);
             if (SESSION.equals(req.getRequestURI())) {
                 session(req, resp);
                 return;
@@ -128,6 +134,18 @@ public final class RequestGate implements Filter {
             return;
         }
         chain.doFilter(req, resp);
+    }
+
+    /**
+     * Fails closed: a request that reached a servlet without passing the gate (a moment while the components
+     * restart after a configuration change, the filter gone before the servlets) is answered 503, never served.
+     *
+     * @throws HttpError 503
+     */
+    static void requirePassed(HttpServletRequest req) {
+        if (req.getAttribute(PASSED) == null) {
+            throw new HttpError(503, "the edge's REST API is (re)starting; try again in a moment");
+        }
     }
 
     private void check(HttpServletRequest req) {

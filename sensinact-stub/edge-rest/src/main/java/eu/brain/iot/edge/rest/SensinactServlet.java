@@ -16,6 +16,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletNa
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPattern;
 
 import eu.brain.iot.edge.model.api.DeviceModel;
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -47,7 +48,8 @@ public final class SensinactServlet extends HttpServlet {
 
     @Activate
     public SensinactServlet(@Reference DeviceModel model, RestConfig config,
-            @Reference(service = LoggerFactory.class) Logger log) {
+            @Reference(service = LoggerFactory.class) Logger log,
+            @Reference(target = RequestGate.TARGET) Filter gate) { // started only once the gate filters requests
         this.log = log;
         this.reads = new Reads(model);
         this.acts = new Acts(model, positive("act.timeout.ms", config.act_timeout_ms()),
@@ -71,6 +73,7 @@ public final class SensinactServlet extends HttpServlet {
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         try {
+            RequestGate.requirePassed(req);
             Route route = Route.parse(req.getPathInfo());
             route.checkMethod(req.getMethod());
             if (route.kind() == Route.Kind.ACT) {

@@ -22,6 +22,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPa
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import jakarta.servlet.AsyncContext;
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -53,7 +54,8 @@ public final class SubscribeServlet extends HttpServlet {
 
     @Activate
     public SubscribeServlet(@Reference DeviceModel model, RestConfig config,
-            @Reference(service = LoggerFactory.class) Logger log) {
+            @Reference(service = LoggerFactory.class) Logger log,
+            @Reference(target = RequestGate.TARGET) Filter gate) { // started only once the gate filters requests
         this.model = model;
         this.log = log;
         this.capacity = (int) SensinactServlet.positive("sse.queue.capacity", config.sse_queue_capacity());
@@ -76,6 +78,7 @@ public final class SubscribeServlet extends HttpServlet {
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         try {
+            RequestGate.requirePassed(req);
             boolean head = req.getMethod().equals("HEAD");
             if (!req.getMethod().equals("GET") && !head) {
                 throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
