@@ -1,5 +1,6 @@
 package eu.brain.iot.edge.impl;
 
+import java.util.List;
 import java.util.Map;
 
 import eu.brain.iot.edge.api.CancelMissionCommand;
@@ -15,13 +16,17 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
 final class Actions {
 
     static final String SERVICE = "control";
+    /** The parameters each action takes (kind:action); an action not listed takes none. */
+    private static final Map<String, List<String>> PARAMETERS = Map.of("ROBOT:goTo", List.of("x", "y"),
+            "ROBOT:cancel", List.of("missionType", "missionId"));
 
     private Actions() {
     }
 
     /**
      * @throws UnknownResourceException when the kind of provider has no such action
-     * @throws IllegalArgumentException when a parameter is missing or of the wrong type
+     * @throws IllegalArgumentException when a parameter is missing, of the wrong type or unknown (a typo must not
+     *                                  run a different command than meant)
      */
     static EdgeCommand command(String providerId, DeviceKind kind, String service, String action,
             Map<String, Object> params) {
@@ -53,6 +58,13 @@ final class Actions {
             default -> throw new UnknownResourceException(providerId + " has no action '" + action
                     + "' (actions: " + kind.actions + ")");
         };
+        List<String> allowed = PARAMETERS.getOrDefault(kind + ":" + action, List.of());
+        for (String name : new java.util.TreeSet<>(params.keySet())) {
+            if (!allowed.contains(name)) {
+                throw new IllegalArgumentException("unknown parameter '" + name + "': " + action
+                        + (allowed.isEmpty() ? " takes no parameters" : " takes " + allowed));
+            }
+        }
         command.deviceId = providerId;
         return command;
     }

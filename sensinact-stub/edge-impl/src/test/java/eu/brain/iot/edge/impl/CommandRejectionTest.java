@@ -84,6 +84,11 @@ class CommandRejectionTest {
                 .hasMessage("parameter 'x' must be a whole number, found 9 (a string)");
         assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "goTo", Map.of("x", 9)))
                 .hasMessage("parameter 'y' is missing");
+        assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "goTo", Map.of("x", 9, "y", 7, "z", 1)))
+                .isInstanceOf(IllegalArgumentException.class)
+                .hasMessage("unknown parameter 'z': goTo takes [x, y]");
+        assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "pick", Map.of("foo", 1)))
+                .hasMessage("unknown parameter 'foo': pick takes no parameters");
         assertThatThrownBy(() -> fleet.edge.act("robot1", "control", "fly", Map.of()))
                 .isInstanceOf(UnknownResourceException.class).hasMessageContaining("robot1 has no action 'fly'");
         assertThatThrownBy(() -> fleet.edge.act("robot7", "control", "pick", Map.of()))

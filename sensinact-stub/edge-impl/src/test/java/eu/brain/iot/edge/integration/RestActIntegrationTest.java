@@ -76,6 +76,12 @@ class RestActIntegrationTest extends EdgeRestTestBase {
                 "Duplicate field 'x'");
         assertError(edge.post(GOTO.formatted("robot1"), "[9,7]"), 400, "must be a JSON object",
                 "found a JSON array");
+        // strict: an unknown parameter is refused, never ignored (robot1 stays where it is)
+        assertError(edge.post(GOTO.formatted("robot1"), "{\"x\":9,\"y\":7,\"z\":1}"), 400,
+                "unknown parameter 'z': goTo takes [x, y]");
+        assertError(edge.post("/sensinact/providers/robot1/services/control/resources/pick/act", "{\"foo\":1}"), 400,
+                "unknown parameter 'foo': pick takes no parameters");
+        assertError(edge.post(GOTO.formatted("robot1"), "{\"x\":9,\"y\":7,\"x\":1}"), 400, "Duplicate field 'x'");
     }
 
     @Test

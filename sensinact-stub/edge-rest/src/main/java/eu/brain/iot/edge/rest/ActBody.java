@@ -1,12 +1,14 @@
 package eu.brain.iot.edge.rest;
 
-import java.io.IOException;
-import java.io.InputStream;
+import java.nio.charset.StandardCharsets;
 import java.util.Map;
 
+import com.fasterxml.jackson.core.JsonFactory;
 import com.fasterxml.jackson.core.JsonLocation;
 import com.fasterxml.jackson.core.JsonParser;
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.StreamReadConstraints;
+import com.fasterxml.jackson.core.exc.StreamConstraintsException;
 import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.databind.JsonNode;
@@ -15,11 +17,15 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 /**
  * An ACT request's body: a JSON object of the action's parameters ({@code {"x":9,"y":7}}), or nothing for an action
  * without parameters. Strict, so that a typo is an error rather than a silently different command: duplicate
- * keys and anything after the object are refused, and a syntax error names its line and column.
+ * keys, nesting deeper than {@value #MAX_DEPTH} and anything after the object are refused, and a syntax error names
+ * its line and column. Which parameters an action takes is the device model's business (it names the unknown ones).
  */
 final class ActBody {
 
-    private static final ObjectMapper STRICT = new ObjectMapper()
+    /** No action takes nested parameters: a few levels are room enough, and a deep document costs the parser. */
+    static final int MAX_DEPTH = 16;
+    private static final ObjectMapper STRICT = new ObjectMapper(JsonFactory.builder()
+            .streamReadConstraints(StreamReadConstraints.builder().maxNestingDepth(MAX_DEPTH).build()).build())
             .enable(JsonParser.Feature.STRICT_DUPLICATE_DETECTION)
             .enable(DeserializationFeature.FAIL_ON_TRAILING_TOKENS);
     private static final TypeReference<Map<String, Object>> MAP = new TypeReference<>() {
@@ -28,32 +34,31 @@ final class ActBody {
     private ActBody() {
     }
 
-    /**
-     * @throws HttpError 400 for a body that is not a JSON object, 413 for one larger than {@code maxBytes}
-     * @throws IOException when the request cannot be read
-     */
-    static Map<String, Object> parameters(InputStream in, int maxBytes, String example) throws IOException {
-        byte[] bytes = in.readNBytes(maxBytes + 1);
-        if (bytes.length > maxBytes) {
-            throw new HttpError(413, "the body is larger than " + maxBytes + " bytes (act.max.body.bytes); an ACT "
-                    + "takes a small JSON object of parameters such as " + example);
-        }
-        if (new String(bytes, java.nio.charset.StandardCharsets.UTF_8).isBlank()) {
+    /** @throws HttpError 400 for a body that is not a JSON object (the field is {@code body}) */
+    static Map<String, Object> parameters(byte[] bytes, String example) {
+        if (new String(bytes, StandardCharsets.UTF_8).isBlank()) {
             return Map.of();
         }
         JsonNode tree;
         try {
             tree = STRICT.readTree(bytes);
+        } catch (StreamConstraintsException e) {
+            throw HttpError.about(400, "body", "JSON nesting depth exceeds " + MAX_DEPTH + where(e.getLocation())
+                    + "; an ACT takes a flat JSON object of parameters such as " + example);
         } catch (JsonProcessingException e) {
-            JsonLocation at = e.getLocation();
-            String where = at == null ? "" : " at line " + at.getLineNr() + ", column " + at.getColumnNr();
-            throw HttpError.badRequest("malformed JSON" + where + ": " + e.getOriginalMessage()
-                    + "; send a JSON object of parameters such as " + example);
+            throw HttpError.about(400, "body", "malformed JSON" + where(e.getLocation()) + ": "
+                    + e.getOriginalMessage() + "; send a JSON object of parameters such as " + example);
+        } catch (java.io.IOException e) {
+            throw new IllegalStateException("reading bytes in memory cannot fail", e);
         }
         if (!tree.isObject()) {
-            throw HttpError.badRequest("the body must be a JSON object of parameters such as " + example
+            throw HttpError.about(400, "body", "the body must be a JSON object of parameters such as " + example
                     + ", found a JSON " + tree.getNodeType().name().toLowerCase());
         }
         return STRICT.convertValue(tree, MAP);
+    }
+
+    private static String where(JsonLocation at) {
+        return at == null ? "" : " at line " + at.getLineNr() + ", column " + at.getColumnNr();
     }
 }

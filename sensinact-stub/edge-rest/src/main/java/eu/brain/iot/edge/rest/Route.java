@@ -22,7 +22,7 @@ record Route(Kind kind, String path, String provider, String service, String res
     static final String SHAPES = "/sensinact/providers, /sensinact/providers/{p}, /sensinact/providers/{p}/services, "
             + "/sensinact/providers/{p}/services/{s}, /sensinact/providers/{p}/services/{s}/resources, "
             + "/sensinact/providers/{p}/services/{s}/resources/{r}, POST .../resources/{action}/act, "
-            + "/sensinact/subscribe?provider=&service=";
+            + "/sensinact/subscribe?provider=&service=, POST|DELETE /sensinact/session";
 
     /**
      * @param pathInfo the servlet's path info (after {@code /sensinact}), already URL-decoded; may be {@code null}

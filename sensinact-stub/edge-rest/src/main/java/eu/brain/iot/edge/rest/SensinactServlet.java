@@ -1,9 +1,12 @@
 package eu.brain.iot.edge.rest;
 
 import java.io.IOException;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
@@ -13,6 +16,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletNa
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPattern;
 
 import eu.brain.iot.edge.model.api.DeviceModel;
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -35,14 +39,27 @@ public final class SensinactServlet extends HttpServlet {
     private final transient Reads reads;
     private final transient Acts acts;
     private final transient Logger log;
+    /** Body deadlines of ACTs; never waits on anything. */
+    private final transient ScheduledExecutorService timer = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "edge-rest-timer");
+        t.setDaemon(true);
+        return t;
+    });
 
     @Activate
     public SensinactServlet(@Reference DeviceModel model, RestConfig config,
-            @Reference(service = LoggerFactory.class) Logger log) {
+            @Reference(service = LoggerFactory.class) Logger log,
+            @Reference(target = RequestGate.TARGET) Filter gate) { // started only once the gate filters requests
         this.log = log;
         this.reads = new Reads(model);
         this.acts = new Acts(model, positive("act.timeout.ms", config.act_timeout_ms()),
-                (int) positive("act.max.body.bytes", config.act_max_body_bytes()), log);
+                (int) positive("act.max.body.bytes", config.act_max_body_bytes()),
+                positive("act.body.timeout.ms", config.act_body_timeout_ms()), timer, log);
+    }
+
+    @Deactivate
+    void deactivate() {
+        timer.shutdownNow();
     }
 
     static long positive(String property, long value) {
@@ -56,6 +73,7 @@ public final class SensinactServlet extends HttpServlet {
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         try {
+            RequestGate.requirePassed(req);
             Route route = Route.parse(req.getPathInfo());
             route.checkMethod(req.getMethod());
             if (route.kind() == Route.Kind.ACT) {

@@ -32,7 +32,7 @@ import jakarta.servlet.WriteListener;
  * happens on the shared SSE thread ({@code writer}) or on a container thread ({@link #onWritePossible}), under this
  * object's lock; writes never block (the output is in non-blocking mode), so neither thread waits on a client.
  * Heartbeat comments go through the same queue; a write to a client that went away fails, which ends the stream and
- * its subscription.
+ * its subscription; a client that stays connected but reads nothing is ended by {@link #checkStalled} (writer thread).
  */
 final class SseClient implements ResourceListener, WriteListener, AsyncListener {
 
@@ -43,6 +43,9 @@ final class SseClient implements ResourceListener, WriteListener, AsyncListener 
     private final Executor writer;
     private final BlockingQueue<String> queue;
     private final int capacity;
+    private final long writeTimeoutMillis;
+    /** When the connection last stopped taking bytes (System.nanoTime), or 0 while it takes them. */
+    private volatile long stalledSince;
     private final String who;
     private final Logger log;
     private final Consumer<SseClient> onClose;
@@ -52,12 +55,13 @@ final class SseClient implements ResourceListener, WriteListener, AsyncListener 
     /** Guarded by {@code this}: bytes written since the last flush. */
     private boolean unflushed;
 
-    SseClient(AsyncContext async, Executor writer, int capacity, String who, Logger log, Consumer<SseClient> onClose)
-            throws IOException {
+    SseClient(AsyncContext async, Executor writer, int capacity, long writeTimeoutMillis, String who, Logger log,
+            Consumer<SseClient> onClose) throws IOException {
         this.async = async;
         this.out = async.getResponse().getOutputStream();
         this.writer = writer;
         this.capacity = capacity;
+        this.writeTimeoutMillis = writeTimeoutMillis;
         this.queue = new ArrayBlockingQueue<>(capacity);
         this.who = who;
         this.log = log;
@@ -115,8 +119,22 @@ final class SseClient implements ResourceListener, WriteListener, AsyncListener 
         }
     }
 
+    /**
+     * A client that stopped reading (the kernel's buffers full, so the container takes no more) is disconnected
+     * once it has taken nothing for {@code sse.write.timeout.ms}; without this it would be found only when its
+     * queue fills, which at a few changes a second takes minutes behind megabytes of socket buffers.
+     */
+    void checkStalled() {
+        long since = stalledSince;
+        if (since != 0 && System.nanoTime() - since > writeTimeoutMillis * 1_000_000) {
+            close("not reading: it took no bytes for " + writeTimeoutMillis + " ms (sse.write.timeout.ms); "
+                    + "it may reconnect", true);
+        }
+    }
+
     @Override
     public void onWritePossible() {
+        stalledSince = 0;
         drain();
     }
 
@@ -138,6 +156,9 @@ final class SseClient implements ResourceListener, WriteListener, AsyncListener 
                 }
                 out.write(next.getBytes(StandardCharsets.UTF_8));
                 unflushed = true;
+            }
+            if (stalledSince == 0) {
+                stalledSince = System.nanoTime(); // the container calls onWritePossible when it takes bytes again
             }
         } catch (IOException | IllegalStateException e) {
             close("it went away (a write failed: " + e.getMessage() + ")", false);

@@ -22,6 +22,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPa
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import jakarta.servlet.AsyncContext;
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -43,6 +44,7 @@ public final class SubscribeServlet extends HttpServlet {
     private final transient DeviceModel model;
     private final transient Logger log;
     private final int capacity;
+    private final long writeTimeoutMillis;
     private final transient Set<SseClient> clients = ConcurrentHashMap.newKeySet();
     private final transient ScheduledExecutorService writer = Executors.newSingleThreadScheduledExecutor(r -> {
         Thread t = new Thread(r, "edge-sse");
@@ -52,12 +54,18 @@ public final class SubscribeServlet extends HttpServlet {
 
     @Activate
     public SubscribeServlet(@Reference DeviceModel model, RestConfig config,
-            @Reference(service = LoggerFactory.class) Logger log) {
+            @Reference(service = LoggerFactory.class) Logger log,
+            @Reference(target = RequestGate.TARGET) Filter gate) { // started only once the gate filters requests
         this.model = model;
         this.log = log;
         this.capacity = (int) SensinactServlet.positive("sse.queue.capacity", config.sse_queue_capacity());
         long heartbeat = SensinactServlet.positive("sse.heartbeat.ms", config.sse_heartbeat_ms());
+        this.writeTimeoutMillis = SensinactServlet.positive("sse.write.timeout.ms", config.sse_write_timeout_ms());
         writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::heartbeat), heartbeat, heartbeat,
+                TimeUnit.MILLISECONDS);
+        // a client that stopped reading is found within a quarter of the write timeout after it expires
+        long check = Math.max(10, writeTimeoutMillis / 4);
+        writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::checkStalled), check, check,
                 TimeUnit.MILLISECONDS);
     }
 
@@ -70,16 +78,37 @@ public final class SubscribeServlet extends HttpServlet {
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         try {
-            if (!req.getMethod().equals("GET")) {
+            RequestGate.requirePassed(req);
+            boolean head = req.getMethod().equals("HEAD");
+            if (!req.getMethod().equals("GET") && !head) {
                 throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
                         "a stream of changes as text/event-stream");
             }
-            String provider = parameter(req, "provider");
-            String service = parameter(req, "service");
-            checkQuery(req);
+            String provider;
+            String service;
+            try {
+                provider = parameter(req, "provider");
+                service = parameter(req, "service");
+                checkQuery(req);
+            } catch (HttpError e) {
+                throw e;
+            } catch (RuntimeException e) {
+                // Jetty decodes the query lazily and throws (a BadMessageException) on bytes that are not UTF-8
+                throw HttpError.about(400, "query", "the query string is not valid percent-encoded UTF-8 ("
+                        + e.getMessage() + "); encode provider and service names as UTF-8, e.g. "
+                        + "?provider=robot1&service=position");
+            }
             if (provider != null && model.provider(provider).isEmpty()) {
                 throw HttpError.notFound("no provider '" + provider + "'; providers: "
                         + model.providers().stream().map(ProviderSnapshot::id).toList());
+            }
+            if (head) {
+                // what a GET would answer, without the stream (and without a subscription)
+                resp.setStatus(200);
+                resp.setContentType("text/event-stream");
+                resp.setCharacterEncoding("UTF-8");
+                resp.setHeader("Cache-Control", "no-store");
+                return;
             }
             open(req, resp, provider, service);
         } catch (HttpError e) {
@@ -98,7 +127,8 @@ public final class SubscribeServlet extends HttpServlet {
         String filter = "provider=" + (provider == null ? "*" : provider) + ", service="
                 + (service == null ? "*" : service);
         String who = req.getRemoteAddr() + ":" + req.getRemotePort() + " (" + filter + ")";
-        SseClient client = new SseClient(async, writer, capacity, who, log, clients::remove);
+        SseClient client = new SseClient(async, writer, capacity, writeTimeoutMillis, who, log,
+                clients::remove);
         clients.add(client);
         client.start("subscribed to " + filter, listener -> model.subscribe(provider, service, listener));
         log.debug("SSE client " + who + " subscribed");

@@ -1,0 +1,87 @@
+package eu.brain.iot.edge.rest;
+
+import java.util.Arrays;
+
+import org.apache.felix.http.jetty.ConnectorFactory;
+import org.eclipse.jetty.server.AbstractConnector;
+import org.eclipse.jetty.server.ConnectionLimit;
+import org.eclipse.jetty.server.Connector;
+import org.eclipse.jetty.server.LocalConnector;
+import org.eclipse.jetty.server.Server;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+
+/**
+ * What Felix HTTP 5.2.2 offers no property for: JSON instead of Jetty's HTML error pages (also for the errors of its
+ * request parser, 400/414/431, which no servlet error page sees), a bound on connections in total (Jetty's
+ * {@link ConnectionLimit}) and one per client address ({@link PerClientLimit}).
+ * <p>
+ * Felix HTTP hands its running Jetty {@link Server} to every {@link ConnectorFactory} service (its extension point
+ * for extra connectors) and only there; this component uses that call to install the above on the server and its
+ * HTTP connector, and returns an in-memory {@link LocalConnector} (no socket) as the connector it must add.
+ * Felix HTTP calls it again after it restarts Jetty (a new configuration).
+ * <p>
+ * Threads: Felix HTTP's, one call at a time (its service tracker).
+ */
+@Component(service = ConnectorFactory.class, configurationPid = RestConfig.PID)
+public final class JettySetup implements ConnectorFactory {
+
+    private final int maxConnections;
+    private final int maxPerClient;
+    private final Logger log;
+    private final java.util.List<Runnable> undo = new java.util.ArrayList<>();
+
+    @Activate
+    public JettySetup(RestConfig config, @Reference(service = LoggerFactory.class) Logger log) {
+        this.maxConnections = (int) SensinactServlet.positive("max.connections", config.max_connections());
+        this.maxPerClient = (int) SensinactServlet.positive("max.connections.per.client",
+                config.max_connections_per_client());
+        this.log = log;
+    }
+
+    @Override
+    public synchronized Connector createConnector(Server server) {
+        org.eclipse.jetty.server.handler.ErrorHandler before = server.getErrorHandler();
+        server.setErrorHandler(new JsonErrorHandler());
+        Connector[] network = Arrays.stream(server.getConnectors()).filter(c -> !(c instanceof LocalConnector))
+                .toArray(Connector[]::new);
+        ConnectionLimit total = new ConnectionLimit(maxConnections, network);
+        PerClientLimit perClient = new PerClientLimit(maxPerClient, log);
+        try {
+            total.start();
+        } catch (Exception e) {
+            log.warn("could not limit Jetty's connections to " + maxConnections + ": " + e);
+        }
+        for (Connector c : network) {
+            if (c instanceof AbstractConnector a) {
+                a.addBean(perClient);
+            }
+        }
+        undo.add(() -> {
+            // Jetty keeps running when this bundle stops: it must not keep a handler of a bundle that may go away
+            server.setErrorHandler(before);
+            try {
+                total.stop();
+            } catch (Exception e) {
+                log.debug("stopping the connection limit: " + e);
+            }
+            for (Connector c : network) {
+                if (c instanceof AbstractConnector a) {
+                    a.removeBean(perClient);
+                }
+            }
+        });
+        log.info("Jetty: JSON error pages, at most " + maxConnections + " connections (" + maxPerClient
+                + " per client address)");
+        return new LocalConnector(server);
+    }
+
+    @Deactivate
+    synchronized void deactivate() {
+        undo.forEach(Runnable::run); // Felix HTTP removes the LocalConnector itself
+    }
+}
