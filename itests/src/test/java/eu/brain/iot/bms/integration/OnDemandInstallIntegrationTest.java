@@ -280,18 +280,13 @@ class OnDemandInstallIntegrationTest {
     void aBehaviourStoppedOrUninstalledMidScenarioComesBackAndEveryEventArrivesOnceInOrder() throws Exception {
         BundleInstaller installer = configure();
         long unhandledBefore = typeStatistics(Order.class.getName()).unhandled; // the bus counts since its start
-        int published = 0;
-        for (; published < 5; published++) {
-            bus.deliver(order("p", published));
-        }
+        publishOrders(0, 5);
         await().atMost(DEADLINE).until(() -> acks.size() == 5);
         Bundle first = bundle(ORDERS);
 
         first.stop();
         awaitNoConsumerOf(ORDERS);
-        for (; published < 505; published++) {
-            bus.deliver(order("p", published));
-        }
+        publishOrders(5, 505);
         await().atMost(DEADLINE).until(() -> acks.size() == 505);
         assertThat(bundles(ORDERS)).as("started again, not installed twice").singleElement()
                 .satisfies(b -> assertThat(b.getBundleId()).isEqualTo(first.getBundleId()))
@@ -301,9 +296,7 @@ class OnDemandInstallIntegrationTest {
 
         first.uninstall();
         awaitNoConsumerOf(ORDERS);
-        for (; published < 1_005; published++) {
-            bus.deliver(order("p", published));
-        }
+        publishOrders(505, 1_005);
         await().atMost(DEADLINE).until(() -> acks.size() == 1_005);
         assertThat(bundles(ORDERS)).as("installed again").singleElement()
                 .satisfies(b -> assertThat(b.getBundleId()).isNotEqualTo(first.getBundleId()))
@@ -329,6 +322,7 @@ class OnDemandInstallIntegrationTest {
         bus.deliver(order("p", 0));
         await().atMost(DEADLINE).until(() -> acks.size() == 1);
         long id = bundle(ORDERS).getBundleId();
+        long unhandledBefore = typeStatistics(Order.class.getName()).unhandled; // the bus counts since its start
 
         assertThat(bisCommand("stop", ORDERS)).startsWith("stopped " + ORDERS).contains("bis:allow " + ORDERS);
         assertThat(bundle(ORDERS).getState()).isEqualTo(Bundle.RESOLVED);
@@ -336,6 +330,9 @@ class OnDemandInstallIntegrationTest {
         await().atMost(DEADLINE).until(() -> !alertsOf(BehaviourInstallFailed.class).isEmpty());
         assertThat(alertsOf(BehaviourInstallFailed.class).get(0).problem).isEqualTo("REMOVED_BY_OPERATOR");
         assertThat(alertsOf(BehaviourInstallFailed.class).get(0).reason).contains("bis:stop by an operator");
+        // given up, counted as unhandled: at once, or by the BMS's sweep when the bus held it after the refusal came
+        await().atMost(DEADLINE).until(() -> typeStatistics(Order.class.getName()).unhandled == unhandledBefore + 1);
+        assertThat(typeStatistics(Order.class.getName()).held).isZero();
         assertThat(bundle(ORDERS).getState()).isEqualTo(Bundle.RESOLVED);
         assertThat(bisCommand("list")).contains("removed or stopped by an operator: " + ORDERS);
 
@@ -368,6 +365,13 @@ class OnDemandInstallIntegrationTest {
         assertThat(service(BehaviourManagerStatistics.class).counters().heldEvents)
                 .as("not one of them was held: the publisher never waited for an install").isZero();
         assertThat(service(BehaviourManagerStatistics.class).counters().searches).isEqualTo(1);
+    }
+
+    /** Publishes orders of publisher "p" with sequence numbers {@code from} (included) to {@code to} (excluded). */
+    private void publishOrders(int from, int to) {
+        for (int seq = from; seq < to; seq++) {
+            bus.deliver(order("p", seq));
+        }
     }
 
     private void awaitNoConsumerOf(String symbolicName) {
