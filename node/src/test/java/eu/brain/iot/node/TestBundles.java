@@ -8,7 +8,14 @@ import java.util.jar.Attributes;
 import java.util.jar.JarOutputStream;
 import java.util.jar.Manifest;
 
-/** Bundles for tests: a jar with nothing but a manifest, which is all a bundle needs to be installed and started. */
+/**
+ * Bundles for tests: a jar with nothing but a manifest, which is all a bundle needs to be installed and started.
+ * <p>
+ * Kept, not replaced by osgi-test's {@code @InjectInstalledBundle}: these tests are not in-framework tests. They
+ * launch a framework of their own ({@code BundleHealthTest}, which needs bundles with broken or unresolvable
+ * headers written per test) or a whole node process ({@code FabricNodeSmokeTest}, which drops a jar file into the
+ * node's configuration folder), and osgi-test installs bundles only into the framework the test itself runs in.
+ */
 public final class TestBundles {
 
     private TestBundles() {

@@ -4,26 +4,28 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
 import java.time.Duration;
-import java.util.ArrayList;
-import java.util.List;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.test.common.annotation.InjectBundleContext;
+import org.osgi.test.common.annotation.InjectInstalledBundle;
 import org.osgi.test.common.annotation.InjectService;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.integration.tb.BlockingConsumerActivator;
-import eu.brain.iot.eventing.integration.tb.CopyConsumerActivator;
 import eu.brain.iot.eventing.integration.tb.CopyEvent;
+import eu.brain.iot.eventing.integration.tb.CopyConsumerActivator;
 import eu.brain.iot.eventing.integration.tb.Position;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
 
-/** Behaviours in bundles of their own: private copies of event classes, and bundles that stop mid-stream. */
+/**
+ * Behaviours in bundles of their own: private copies of event classes, and bundles that stop mid-stream. The
+ * bundles are the jars made from src/test/bundles/*.bnd and embedded in the test bundle; osgi-test installs them
+ * through the test's bundle context, which uninstalls them when the test ends.
+ */
 class BundleIsolationIntegrationTest {
 
     static final Duration DEADLINE = Duration.ofSeconds(10);
@@ -39,20 +41,11 @@ class BundleIsolationIntegrationTest {
 
     BusTestSupport behaviours;
     int baseline;
-    final List<Bundle> installed = new ArrayList<>();
 
     @BeforeEach
     void setUp() {
         behaviours = new BusTestSupport(context);
         baseline = stats.consumers().size(); // behaviours other tests' bundles keep registered
-    }
-
-    @AfterEach
-    void tearDown() throws Exception {
-        behaviours.close();
-        for (Bundle b : installed) {
-            b.uninstall();
-        }
     }
 
     private static CopyEvent copyEvent(String robot, int x) {
@@ -69,13 +62,14 @@ class BundleIsolationIntegrationTest {
     }
 
     @Test
-    void bundlesWithTheirOwnCopyOfAnEventClassReceiveInstancesOfTheirOwnClass() throws Exception {
+    void bundlesWithTheirOwnCopyOfAnEventClassReceiveInstancesOfTheirOwnClass(
+            @InjectInstalledBundle(value = "tb.copy.one.jar", start = true) Bundle one,
+            @InjectInstalledBundle(value = "tb.copy.two.jar", start = true) Bundle two) throws Exception {
         Recorder acks = new Recorder();
         behaviours.untyped(acks, CopyConsumerActivator.ACK);
-        installed.add(TestBundles.install(context, "tb.copy.one", CopyConsumerActivator.class, CopyEvent.class, Position.class));
-        installed.add(TestBundles.install(context, "tb.copy.two", CopyConsumerActivator.class, CopyEvent.class, Position.class));
         await().atMost(DEADLINE).untilAsserted(() -> assertThat(stats.consumers()).hasSize(baseline + 3));
-        assertThat(installed.get(0).loadClass(CopyEvent.class.getName())).isNotSameAs(CopyEvent.class);
+        assertThat(one.loadClass(CopyEvent.class.getName())).isNotSameAs(CopyEvent.class);
+        assertThat(two.loadClass(CopyEvent.class.getName())).isNotSameAs(one.loadClass(CopyEvent.class.getName()));
 
         bus.deliver(copyEvent("robot1", 7));
 
@@ -87,11 +81,10 @@ class BundleIsolationIntegrationTest {
     }
 
     @Test
-    void aBundleStoppedWithQueuedEventsLeavesNoThreadAndNoExceptionStorm() throws Exception {
+    void aBundleStoppedWithQueuedEventsLeavesNoThreadAndNoExceptionStorm(
+            @InjectInstalledBundle(value = "tb.stuck.jar", start = true) Bundle bundle) throws Exception {
         Recorder stuck = new Recorder();
         behaviours.untyped(stuck, BlockingConsumerActivator.STUCK);
-        Bundle bundle = TestBundles.install(context, "tb.stuck", BlockingConsumerActivator.class, CopyEvent.class, Position.class);
-        installed.add(bundle);
         await().atMost(DEADLINE).untilAsserted(() -> assertThat(stats.consumers()).hasSize(baseline + 2));
 
         bus.deliver(copyEvent("robot1", 0));

@@ -3,9 +3,7 @@ package eu.brain.iot.eventing.integration;
 import static org.awaitility.Awaitility.await;
 
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.Hashtable;
-import java.util.List;
 
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
@@ -16,10 +14,13 @@ import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 
-/** Registers behaviours as services, as a bundle with @SmartBehaviourDefinition would, and removes them after. */
-final class BusTestSupport implements AutoCloseable {
+/**
+ * Registers behaviours as services, as a bundle with @SmartBehaviourDefinition would. Give it the test's
+ * {@code @InjectBundleContext} context: that is osgi-test's {@code CloseableBundleContext}, which unregisters every
+ * service registered through it when the test ends, so nothing here needs a clean-up of its own.
+ */
+final class BusTestSupport {
     private final BundleContext context;
-    private final List<ServiceRegistration<?>> registrations = new ArrayList<>();
 
     /**
      * Wait until the bus has applied a configuration change in place: Declarative Services calls the bus's
@@ -41,19 +42,19 @@ final class BusTestSupport implements AutoCloseable {
 
     ServiceRegistration<?> typed(SmartBehaviour<?> behaviour, String filter, Class<?>... consumed) {
         Hashtable<String, Object> props = props(filter, consumed);
-        return track(context.registerService(SmartBehaviour.class.getName(), behaviour, props));
+        return context.registerService(SmartBehaviour.class.getName(), behaviour, props);
     }
 
     ServiceRegistration<?> untyped(UntypedSmartBehaviour behaviour, String... consumed) {
         Hashtable<String, Object> props = new Hashtable<>();
         props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, consumed);
-        return track(context.registerService(UntypedSmartBehaviour.class, behaviour, props));
+        return context.registerService(UntypedSmartBehaviour.class, behaviour, props);
     }
 
     ServiceRegistration<?> lastResort(UntypedSmartBehaviour behaviour) {
         Hashtable<String, Object> props = new Hashtable<>();
         props.put(SmartBehaviourNamespace.LAST_RESORT_PROPERTY, Boolean.TRUE);
-        return track(context.registerService(UntypedSmartBehaviour.class, behaviour, props));
+        return context.registerService(UntypedSmartBehaviour.class, behaviour, props);
     }
 
     private static Hashtable<String, Object> props(String filter, Class<?>... consumed) {
@@ -67,21 +68,5 @@ final class BusTestSupport implements AutoCloseable {
             props.put(SmartBehaviourNamespace.FILTER_PROPERTY, filter);
         }
         return props;
-    }
-
-    private ServiceRegistration<?> track(ServiceRegistration<?> registration) {
-        registrations.add(registration);
-        return registration;
-    }
-
-    @Override
-    public void close() {
-        for (ServiceRegistration<?> r : registrations) {
-            try {
-                r.unregister();
-            } catch (IllegalStateException alreadyGone) {
-                // unregistered by the test itself
-            }
-        }
     }
 }

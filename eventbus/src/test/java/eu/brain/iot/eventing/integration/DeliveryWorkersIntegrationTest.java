@@ -11,9 +11,10 @@ import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceReference;
 import org.osgi.service.cm.Configuration;
-import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.annotation.config.InjectConfiguration;
+import org.osgi.test.common.annotation.config.WithConfiguration;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
@@ -30,13 +31,13 @@ class DeliveryWorkersIntegrationTest {
     @InjectBundleContext
     BundleContext context;
 
-    @InjectService(timeout = 5000)
-    ConfigurationAdmin configAdmin;
+    /** The bus's configuration, bound to any bundle ("?"); osgi-test deletes it again after the test. */
+    @InjectConfiguration(withConfig = @WithConfiguration(pid = "eu.brain.iot.eventing", location = "?"))
+    Configuration config;
 
     @Test
     void withOneDeliveryWorkerABlockedBehaviourStillDelaysNobody() throws Exception {
         long bus0 = busServiceId();
-        Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("delivery.workers", 1);
         props.put("stall.threshold.ms", 5L);
@@ -71,11 +72,12 @@ class DeliveryWorkersIntegrationTest {
             // the worker added for the stall retires once idle (after a second)
             await().atMost(DEADLINE).untilAsserted(() -> assertThat(workerThreads()).hasSize(1));
             assertThat(threadNames()).noneMatch(n -> n.startsWith("brain-iot-bus["));
-        } finally {
-            blocked.open();
-            behaviours.close();
+
             config.delete();
-            BusTestSupport.awaitBusProperty(context, "delivery.workers", 0); // the default again
+            BusTestSupport.awaitBusProperty(context, "delivery.workers", 0); // the default again, in place
+            assertThat(busServiceId()).isEqualTo(bus0);
+        } finally {
+            blocked.open(); // never leave a delivery worker blocked for the next test
         }
     }
 

@@ -12,7 +12,6 @@ import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
@@ -48,11 +47,6 @@ class EventBusIntegrationTest {
     void setUp() {
         behaviours = new BusTestSupport(context);
         baseline = stats.consumers().size(); // behaviours other tests' bundles keep registered
-    }
-
-    @AfterEach
-    void tearDown() {
-        behaviours.close();
     }
 
     private void awaitConsumers(int count) {

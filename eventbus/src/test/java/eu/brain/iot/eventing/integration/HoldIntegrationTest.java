@@ -13,14 +13,13 @@ import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.AtomicReference;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
-import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
-import org.osgi.framework.ServiceRegistration;
 import org.osgi.test.common.annotation.InjectBundleContext;
+import org.osgi.test.common.annotation.InjectBundleInstaller;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.install.BundleInstaller;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.integration.tb.HoldConsumerActivator;
@@ -33,7 +32,9 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 /**
  * The bus's hold with a real policy service: a behaviour bundle installed while 4 publishers send 10,000 events
  * it consumes receives each exactly once, in each publisher's order, whether the event was published before the
- * bundle was installed (held, then handed over), while it started, or after.
+ * bundle was installed (held, then handed over), while it started, or after. The behaviour bundle is the jar made
+ * from src/test/bundles/tb.held.consumer.bnd, embedded in the test bundle; what the test registers and installs goes
+ * through osgi-test's closeable context and installer, which undo it when the test ends.
  */
 class HoldIntegrationTest {
 
@@ -51,8 +52,8 @@ class HoldIntegrationTest {
     @InjectService(timeout = 5000)
     HeldEvents heldEvents;
 
-    final List<ServiceRegistration<?>> registrations = new ArrayList<>();
-    Bundle installed;
+    @InjectBundleInstaller
+    BundleInstaller bundles;
 
     /** Holds {@link HoldEvent}s; everything else follows the bus's own rules. Answers at once. */
     static final class HoldPolicy implements UnhandledEventPolicy {
@@ -67,14 +68,6 @@ class HoldIntegrationTest {
         @Override
         public int maxHeldEvents() {
             return 20_000;
-        }
-    }
-
-    @AfterEach
-    void tearDown() throws Exception {
-        registrations.forEach(ServiceRegistration::unregister);
-        if (installed != null) {
-            installed.uninstall();
         }
     }
 
@@ -93,7 +86,7 @@ class HoldIntegrationTest {
         HoldPolicy policy = new HoldPolicy();
         Hashtable<String, Object> props = new Hashtable<>();
         props.put(Constants.SERVICE_RANKING, 10);
-        registrations.add(context.registerService(UnhandledEventPolicy.class, policy, props));
+        context.registerService(UnhandledEventPolicy.class, policy, props);
         // the bus follows the policy once it asks it (binding is asynchronous to this thread in general)
         await().atMost(DEADLINE).until(() -> {
             bus.deliver(event("probe", 0));
@@ -127,7 +120,7 @@ class HoldIntegrationTest {
         start.countDown();
         await().atMost(DEADLINE).until(() -> published.get() >= 2_000);
         assertThat(heldEvents.held().get(0).count).as("events held before the install").isGreaterThanOrEqualTo(2_000);
-        installed = TestBundles.install(context, "tb.held.consumer", HoldConsumerActivator.class, HoldEvent.class);
+        bundles.installBundle("tb.held.consumer.jar", true);
         for (Thread t : threads) {
             t.join(DEADLINE.toMillis());
         }
@@ -155,13 +148,12 @@ class HoldIntegrationTest {
                 .filter(s -> s.eventType.equals(HoldEvent.class.getName())).findFirst().orElseThrow();
         assertThat(held.held).isZero();
         assertThat(held.delivered).isEqualTo(held.published - held.unhandled);
-        behaviours.close();
     }
 
     @Test
     void discardGivesUpHeldEventsAndCountsThem() throws Exception {
         HoldPolicy policy = new HoldPolicy();
-        registrations.add(context.registerService(UnhandledEventPolicy.class, policy, new Hashtable<>()));
+        context.registerService(UnhandledEventPolicy.class, policy, new Hashtable<>());
         await().atMost(DEADLINE).until(() -> {
             bus.deliver(event("d", 0));
             return !heldEvents.held().isEmpty();

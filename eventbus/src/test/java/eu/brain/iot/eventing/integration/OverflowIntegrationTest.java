@@ -12,9 +12,10 @@ import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceReference;
 import org.osgi.service.cm.Configuration;
-import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.annotation.config.InjectConfiguration;
+import org.osgi.test.common.annotation.config.WithConfiguration;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.EventBusOverflowException;
@@ -28,18 +29,19 @@ class OverflowIntegrationTest {
     @InjectBundleContext
     BundleContext context;
 
-    @InjectService(timeout = 5000)
-    ConfigurationAdmin configAdmin;
+    /** The bus's configuration, bound to any bundle ("?"); osgi-test deletes it again after the test. */
+    @InjectConfiguration(withConfig = @WithConfiguration(pid = "eu.brain.iot.eventing", location = "?"))
+    Configuration config;
 
     @Test
     void aFullQueueMakesDeliverWaitThenThrowWithoutPartialDelivery() throws Exception {
         long bus0 = busServiceId();
-        Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("queue.capacity", 10);
         props.put("overflow.timeout.ms", 300L);
         config.update(props);
         BusTestSupport behaviours = new BusTestSupport(context);
+        GatedBehaviour slow = new GatedBehaviour();
         try {
             BusTestSupport.awaitBusProperty(context, "queue.capacity", 10);
             assertThat(busServiceId()).as("the configuration is applied in place").isEqualTo(bus0);
@@ -47,7 +49,6 @@ class OverflowIntegrationTest {
             EventBusStatistics stats = context.getService(context.getServiceReference(EventBusStatistics.class));
 
             int baseline = stats.consumers().size();
-            GatedBehaviour slow = new GatedBehaviour();
             behaviours.typed(slow, null, PositionEvent.class);
             Recorder fast = new Recorder();
             behaviours.typed(fast, null, PositionEvent.class);
@@ -70,10 +71,12 @@ class OverflowIntegrationTest {
             await().atMost(DEADLINE).until(() -> slow.received() == 11);
             // the refused event reached no one, not even the consumer that had room
             assertThat(fast.events).extracting(e -> ((PositionEvent) e).seq).doesNotContain(11L);
-        } finally {
-            behaviours.close();
+
             config.delete();
-            BusTestSupport.awaitBusProperty(context, "queue.capacity", 65536); // the default again
+            BusTestSupport.awaitBusProperty(context, "queue.capacity", 65536); // the default again, in place
+            assertThat(busServiceId()).isEqualTo(bus0);
+        } finally {
+            slow.open(); // never leave a delivery worker blocked for the next test
         }
     }
 

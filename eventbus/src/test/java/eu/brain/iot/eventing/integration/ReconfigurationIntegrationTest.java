@@ -13,14 +13,15 @@ import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceReference;
 import org.osgi.service.cm.Configuration;
-import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.test.common.annotation.InjectBundleContext;
+import org.osgi.test.common.annotation.InjectInstalledBundle;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.annotation.config.InjectConfiguration;
+import org.osgi.test.common.annotation.config.WithConfiguration;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.integration.tb.CopyConsumerActivator;
 import eu.brain.iot.eventing.integration.tb.CopyEvent;
-import eu.brain.iot.eventing.integration.tb.Position;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
@@ -33,8 +34,9 @@ class ReconfigurationIntegrationTest {
     @InjectBundleContext
     BundleContext context;
 
-    @InjectService(timeout = 5000)
-    ConfigurationAdmin configAdmin;
+    /** The bus's configuration, bound to any bundle ("?"); osgi-test deletes it again after the test. */
+    @InjectConfiguration(withConfig = @WithConfiguration(pid = "eu.brain.iot.eventing", location = "?"))
+    Configuration config;
 
     @InjectService(timeout = 5000)
     EventBus bus;
@@ -47,7 +49,6 @@ class ReconfigurationIntegrationTest {
         long busId = busServiceId();
         BusTestSupport behaviours = new BusTestSupport(context);
         GatedBehaviour blocked = new GatedBehaviour();
-        Configuration config = configAdmin.getConfiguration("eu.brain.iot.eventing", "?");
         try {
             behaviours.typed(blocked, "(robotId=reconfigured)", PositionEvent.class);
             await().atMost(DEADLINE).until(() -> queueOf(blocked) != null);
@@ -73,45 +74,40 @@ class ReconfigurationIntegrationTest {
             await().atMost(DEADLINE).until(() -> blocked.received() == 501);
             EventTypeStatistics after = statsOf(PositionEvent.class.getName());
             assertThat(after.discarded).isEqualTo(before.discarded);
-        } finally {
-            blocked.open();
-            behaviours.close();
+
             config.delete();
             BusTestSupport.awaitBusProperty(context, "delivery.workers", 0); // the default again, same bus
             assertThat(busServiceId()).isEqualTo(busId);
+        } finally {
+            blocked.open(); // never leave a delivery worker blocked for the next test
         }
     }
 
     /** bus:publish, called as Gogo calls it, reaches a typed behaviour in another bundle with its own class. */
     @Test
-    void busPublishDeliversAnUntypedEventToATypedBehaviourOfAnotherBundle() throws Exception {
+    void busPublishDeliversAnUntypedEventToATypedBehaviourOfAnotherBundle(
+            @InjectInstalledBundle(value = "tb.publish.target.jar", start = true) Bundle target)
+            throws Exception {
         BusTestSupport behaviours = new BusTestSupport(context);
         Recorder acks = new Recorder();
         behaviours.untyped(acks, CopyConsumerActivator.ACK);
-        Bundle bundle = TestBundles.install(context, "tb.publish.target", CopyConsumerActivator.class, CopyEvent.class,
-                Position.class);
-        try {
-            await().atMost(DEADLINE).until(() -> stats.consumers().stream()
-                    .anyMatch(c -> c.bundle.equals("tb.publish.target")));
-            ServiceReference<?>[] refs = context.getServiceReferences((String) null,
-                    "(&(osgi.command.scope=bus)(osgi.command.function=publish))");
-            assertThat(refs).hasSize(1);
-            Object commands = context.getService(refs[0]);
-            Method publish = commands.getClass().getMethod("publish", String.class, String[].class);
-            Object answer = publish.invoke(commands, CopyEvent.class.getName(),
-                    new String[] { "robotId=\"robot 9\"", "at.x=5", "at.y=-2" });
-            assertThat(String.valueOf(answer)).startsWith("Published " + CopyEvent.class.getName());
+        await().atMost(DEADLINE).until(() -> stats.consumers().stream()
+                .anyMatch(c -> c.bundle.equals("tb.publish.target")));
+        ServiceReference<?>[] refs = context.getServiceReferences((String) null,
+                "(&(osgi.command.scope=bus)(osgi.command.function=publish))");
+        assertThat(refs).hasSize(1);
+        Object commands = context.getService(refs[0]);
+        Method publish = commands.getClass().getMethod("publish", String.class, String[].class);
+        Object answer = publish.invoke(commands, CopyEvent.class.getName(),
+                new String[] { "robotId=\"robot 9\"", "at.x=5", "at.y=-2" });
+        assertThat(String.valueOf(answer)).startsWith("Published " + CopyEvent.class.getName());
 
-            await().atMost(DEADLINE).until(() -> acks.maps.size() == 1);
-            assertThat(acks.maps.get(0)).containsEntry("ownClass", true).containsEntry("robotId", "robot 9")
-                    .containsEntry("x", 5);
+        await().atMost(DEADLINE).until(() -> acks.maps.size() == 1);
+        assertThat(acks.maps.get(0)).containsEntry("ownClass", true).containsEntry("robotId", "robot 9")
+                .containsEntry("x", 5);
 
-            Object error = publish.invoke(commands, CopyEvent.class.getName(), new String[] { "robotId" });
-            assertThat(String.valueOf(error)).contains("field 1 \"robotId\" is not key=value").contains("usage");
-        } finally {
-            behaviours.close();
-            bundle.uninstall();
-        }
+        Object error = publish.invoke(commands, CopyEvent.class.getName(), new String[] { "robotId" });
+        assertThat(String.valueOf(error)).contains("field 1 \"robotId\" is not key=value").contains("usage");
     }
 
     private ConsumerStatistics queueOf(GatedBehaviour behaviour) {

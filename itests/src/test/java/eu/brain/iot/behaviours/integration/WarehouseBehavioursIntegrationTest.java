@@ -10,16 +10,14 @@ import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.stream.Collectors;
 
-import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
-import org.osgi.framework.ServiceRegistration;
-import org.osgi.service.cm.Configuration;
-import org.osgi.service.cm.ConfigurationAdmin;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
+import org.osgi.test.common.annotation.Property;
+import org.osgi.test.common.annotation.config.WithConfiguration;
 
 import eu.brain.iot.behaviours.events.ConnectorCollisionResolved;
 import eu.brain.iot.behaviours.events.ConnectorResolveCollision;
@@ -34,8 +32,11 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 /**
  * The robot, door and orchestrator behaviours generated from their BIP models at this build, running as bundles
  * in Felix on the real bus: three robots meet an obstacle in the unload area and the orchestrator resolves the
- * collision through the rendezvous connector of the paper's Listing 7.
+ * collision through the rendezvous connector of the paper's Listing 7. The robot behaviour runs with
+ * {@code trace=true} (osgi-test's {@code @WithConfiguration}, removed again after the tests).
  */
+@WithConfiguration(pid = WarehouseBehavioursIntegrationTest.ROBOT_PID, location = "?", properties = @Property(key = "trace",
+        value = "true", scalar = Property.Scalar.Boolean))
 class WarehouseBehavioursIntegrationTest {
 
     static final Duration DEADLINE = Duration.ofSeconds(15);
@@ -50,35 +51,20 @@ class WarehouseBehavioursIntegrationTest {
     EventBus bus;
 
     @InjectService(timeout = 10_000)
-    ConfigurationAdmin configAdmin;
-
-    @InjectService(timeout = 10_000)
     eu.brain.iot.eventing.monitoring.api.EventBusStatistics stats;
 
     final List<BrainIoTEvent> seen = new CopyOnWriteArrayList<>();
-    ServiceRegistration<?> recorder;
-    Configuration robotConfig;
 
     @BeforeEach
     void traceTheRobotsAndRecord() throws Exception {
         Hashtable<String, Object> props = new Hashtable<>();
         props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { TransitionFired.class.getName(),
                 ConnectorResolveCollision.class.getName(), ConnectorCollisionResolved.class.getName() });
-        recorder = context.registerService(SmartBehaviour.class.getName(), (SmartBehaviour<BrainIoTEvent>) seen::add,
-                props);
-        robotConfig = configAdmin.getConfiguration(ROBOT_PID, "?");
-        Hashtable<String, Object> trace = new Hashtable<>();
-        trace.put("trace", true);
-        robotConfig.update(trace);
+        // through the test's CloseableBundleContext: unregistered when the test ends
+        context.registerService(SmartBehaviour.class.getName(), (SmartBehaviour<BrainIoTEvent>) seen::add, props);
         // the reconfigured behaviour is up once its service carries the property
         await().atMost(DEADLINE).untilAsserted(() -> assertThat(robotService("(trace=true)"))
                 .as("the robot behaviour reconfigured with trace=true").isNotNull());
-    }
-
-    @AfterEach
-    void tearDown() throws Exception {
-        recorder.unregister();
-        robotConfig.delete();
     }
 
     private ServiceReference<?> robotService(String filter) throws Exception {

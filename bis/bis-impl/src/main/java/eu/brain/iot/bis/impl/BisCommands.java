@@ -18,7 +18,8 @@ import eu.brain.iot.bis.impl.repo.IndexStatus;
 import eu.brain.iot.bis.impl.repo.Repositories;
 
 /**
- * Gogo commands {@code bis:list}, {@code bis:install}, {@code bis:uninstall}, {@code bis:allow}, {@code bis:repos}.
+ * Gogo commands {@code bis:list}, {@code bis:install}, {@code bis:uninstall}, {@code bis:stop}, {@code bis:allow},
+ * {@code bis:repos}.
  * Every command answers with text, failures included (never a stack trace). Called on the shell's thread; it only
  * waits for the installer's promises.
  */
@@ -46,6 +47,9 @@ public final class BisCommands {
                     .append(b.bundleId).append("  since ").append(Instant.ofEpochMilli(b.installedAt)).append('\n')
                     .append("    why: ").append(b.reason).append('\n').append("    from: ").append(b.repository)
                     .append('\n').append("    consumes: ").append(String.join(", ", b.consumed)).append('\n');
+            installer.lastRestart(b.symbolicName).ifPresent(r -> out.append("    restarted: ")
+                    .append(Instant.ofEpochMilli(r.at())).append(" (").append(r.count()).append(r.count() == 1 ? " time"
+                            : " times").append(" since the installer started), why: ").append(r.why()).append('\n'));
             for (InstalledBundle d : b.bundles.subList(1, b.bundles.size())) {
                 out.append("    needs: ").append(d.symbolicName).append(' ').append(d.version).append(" (bundle ")
                         .append(d.bundleId).append(", used by ").append(d.users).append(")\n");
@@ -57,8 +61,10 @@ public final class BisCommands {
                     .append(problem == null ? "" : "\n    problem: " + problem).append('\n');
         });
         for (Map.Entry<String, String> e : installer.blocked().entrySet()) {
-            out.append("removed by an operator: ").append(e.getKey()).append(" (").append(e.getValue())
-                    .append("); 'bis:allow ").append(e.getKey()).append("' lifts it\n");
+            out.append("removed or stopped by an operator: ").append(e.getKey()).append(" (").append(e.getValue())
+                    .append("); not installed or started automatically until 'bis:allow ").append(e.getKey())
+                    .append("' (the next event needing it brings it back) or 'bis:install ").append(e.getKey())
+                    .append("' (at once)\n");
         }
         return out.toString();
     }
@@ -84,7 +90,17 @@ public final class BisCommands {
                 + symbolicName + "'";
     }
 
-    /** bis:allow NAME: lifts an operator's removal. */
+    /**
+     * bis:stop NAME: stops a behaviour installed by the installer; unlike Gogo's {@code stop}, which the Behaviour
+     * Management Service undoes with the next event the behaviour consumes, it stays stopped until allowed.
+     */
+    public String stop(String symbolicName) {
+        return await(installer.stop(symbolicName, "bis:stop by an operator"), "stopped")
+                + "\nnot started again automatically until 'bis:allow " + symbolicName + "' (the next event it consumes"
+                + " then starts it) or 'bis:install " + symbolicName + "' (starts it at once)";
+    }
+
+    /** bis:allow NAME: lifts an operator's removal or stop. */
     public String allow(String symbolicName) {
         boolean blocked = installer.blocked().containsKey(symbolicName);
         installer.allow(symbolicName);

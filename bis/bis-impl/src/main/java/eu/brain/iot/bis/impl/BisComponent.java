@@ -163,7 +163,7 @@ public final class BisComponent {
             registrations.add(context.registerService(BundleInstaller.class, parts.installer(), null));
             Hashtable<String, Object> props = new Hashtable<>();
             props.put("osgi.command.scope", "bis");
-            props.put("osgi.command.function", new String[] { "list", "install", "uninstall", "allow", "repos" });
+            props.put("osgi.command.function", new String[] { "list", "install", "uninstall", "stop", "allow", "repos" });
             registrations.add(context.registerService(BisCommands.class,
                     new BisCommands(parts.installer(), parts.repositories()), props));
         } catch (IllegalStateException e) {

@@ -39,6 +39,13 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * What every in-framework test of the installer shares: a copy of the real test index in a temporary directory, a
  * fresh journal directory, the installer configured through Config Admin, and a clean-up that uninstalls whatever
  * the test installed and removes the configuration.
+ * <p>
+ * The configuration is written here, not by osgi-test's {@code @WithConfiguration}/{@code @InjectConfiguration}:
+ * those create the configuration before the test from constants, and the installer's is made per test (a fresh copy
+ * of the index, a freshly generated signing key, a fresh journal directory) and changed, removed and written again
+ * within a test (a restart of the installer). A constant placeholder configured before the test would start an
+ * installer on the default journal directory (the user's own, {@code ~/.local/state/brain-iot}). Nor can osgi-test
+ * undo the installs: the installer installs through its own bundle context, not the test's closeable one.
  */
 abstract class BisTestBase {
 

@@ -12,7 +12,10 @@ import eu.brain.iot.bis.api.InstallException;
 import eu.brain.iot.bis.api.InstallException.Problem;
 import eu.brain.iot.bis.api.InstalledBehaviour;
 
-/** An operator's removal holds until an operator allows or installs the behaviour; a stopped one is restarted. */
+/**
+ * An operator's removal or stop holds until an operator allows or installs the behaviour; one stopped by anything
+ * else is restarted, and the restart is in the journal and in bis:list.
+ */
 class OperatorIntegrationTest extends BisTestBase {
 
     @Test
@@ -28,7 +31,7 @@ class OperatorIntegrationTest extends BisTestBase {
         assertThat(refused.problem()).isEqualTo(Problem.REMOVED_BY_OPERATOR);
         assertThat(refused.getMessage()).contains(DOOR, "bis:allow " + DOOR);
         assertThat(bundle(DOOR)).isNull();
-        assertThat(command("list")).contains("removed by an operator: " + DOOR);
+        assertThat(command("list")).contains("removed or stopped by an operator: " + DOOR);
 
         assertThat(command("allow", DOOR)).contains("may be installed automatically again");
         assertThat(value(installer.install(byType(DOOR_CLOSED))).state).isEqualTo("ACTIVE");
@@ -61,6 +64,33 @@ class OperatorIntegrationTest extends BisTestBase {
         assertThat(again.bundleId).isEqualTo(first.bundleId);
         assertThat(again.state).isEqualTo("ACTIVE");
         assertThat(bundleCount(DOOR)).isEqualTo(1);
+        assertThat(busKnows(DOOR)).isTrue();
+        assertThat(command("list")).contains("restarted: ", "(1 time since the installer started)",
+                "why: started again (its bundle was RESOLVED): test: event had no consumer");
+        assertThat(java.nio.file.Files.readString(journal.resolve("history.log")))
+                .containsPattern("\\trestarted\\t" + DOOR + "\\t");
+    }
+
+    @Test
+    void aBehaviourStoppedByAnOperatorStaysStoppedUntilAllowedThenTheNextRequestStartsIt() throws Exception {
+        BundleInstaller installer = configure(settings());
+        awaitOffered(installer, DOOR_CLOSED);
+        InstalledBehaviour first = value(installer.install(byType(DOOR_CLOSED)));
+
+        assertThat(command("stop", DOOR)).contains("stopped " + DOOR, "bis:allow " + DOOR, "bis:install " + DOOR);
+        assertThat(bundle(DOOR).getState()).isEqualTo(Bundle.RESOLVED);
+        InstallException refused = failure(installer.install(byType(DOOR_CLOSED)));
+        assertThat(refused.problem()).isEqualTo(Problem.REMOVED_BY_OPERATOR);
+        assertThat(refused.getMessage()).contains("bis:stop by an operator", "bis:allow " + DOOR);
+        assertThat(bundle(DOOR).getState()).isEqualTo(Bundle.RESOLVED);
+        assertThat(command("list")).contains("removed or stopped by an operator: " + DOOR);
+        assertThat(java.nio.file.Files.readString(journal.resolve("history.log")))
+                .containsPattern("\\tstopped-by-operator\\t" + DOOR + "\\t");
+
+        command("allow", DOOR);
+        InstalledBehaviour again = value(installer.install(byType(DOOR_CLOSED)));
+        assertThat(again.bundleId).isEqualTo(first.bundleId);
+        assertThat(again.state).isEqualTo("ACTIVE");
         assertThat(busKnows(DOOR)).isTrue();
     }
 }

@@ -205,13 +205,24 @@ final class BehaviourManager {
         int attempt = expected instanceof Searching s ? s.attempt() : 1;
         InstallJob job = jobs.get(behaviour);
         if (job == null) {
-            job = new InstallJob(nextJob++, behaviour, scheduler.now());
+            // installed already but not taking events: stopped (a failure, Gogo's stop), a component not satisfied,
+            // or its bundle uninstalled behind the installer's back. The same request starts or installs it again.
+            String state = installer.installed().stream().filter(b -> best.symbolicName.equals(b.symbolicName))
+                    .map(b -> b.state).findFirst().orElse(null);
+            String kind = state == null ? "INSTALLED" : "UNINSTALLED".equals(state) ? "REINSTALLED" : "RESTARTED";
+            job = new InstallJob(nextJob++, behaviour, kind, new ArrayList<>());
             jobs.put(behaviour, job);
             InstallRequest request = new InstallRequest();
             request.symbolicName = best.symbolicName;
             request.versionRange = best.version == null ? null : "[" + best.version + "," + best.version + "]";
             request.consumedTypes = expected.searched();
-            request.reason = "an event of type " + eventType + " had no consumer (Behaviour Management Service)";
+            request.reason = "an event of type " + eventType + " had no consumer" + switch (kind) {
+            case "RESTARTED" -> " and " + best.symbolicName + " is installed but not taking events (" + state
+                    + "): started again";
+            case "REINSTALLED" -> " and the bundle of " + best.symbolicName + " had been uninstalled (not with"
+                    + " bis:uninstall): installed again";
+            default -> "";
+            } + " (Behaviour Management Service)";
             request.operator = false;
             Promise<InstalledBehaviour> result;
             try {
@@ -248,17 +259,23 @@ final class BehaviourManager {
             int attempt = 1;
             for (int k = 0; k < types.size(); k++) {
                 Installing i = waiting.get(k);
-                states.replace(types.get(k), i,
-                        new Installed(i.searched(), i.since(), job.behaviour(), now + settings.handoverGraceMs()));
+                String type = types.get(k);
+                Installed installed = new Installed(i.searched(), i.since(), job.behaviour(),
+                        now + settings.handoverGraceMs());
+                if (states.replace(type, i, installed)) {
+                    // at the end of the grace period, not at the next sweep: events still held then are decided at once
+                    scheduler.schedule(() -> graceEnded(type, installed), settings.handoverGraceMs());
+                }
                 duration = Math.max(duration, now - i.since());
                 attempt = Math.max(attempt, i.attempt());
-                history.add(History.entry(now, "INSTALLED", List.of(types.get(k)), job.behaviour(), now - i.since(),
+                history.add(History.entry(now, job.kind(), List.of(types.get(k)), job.behaviour(), now - i.since(),
                         i.attempt(), 0, null));
             }
             if (!types.isEmpty()) {
                 alerts.installed(types, done.symbolicName, done.version, done.repository, duration, attempt);
-                log.info("Installed {} for events of {} in {} ms (attempt {})", job.behaviour(), types, duration,
-                        attempt);
+                log.info("{} {} for events of {} in {} ms (attempt {})", job.kind().equals("INSTALLED") ? "Installed"
+                        : job.kind().equals("RESTARTED") ? "Started again" : "Installed again", job.behaviour(), types,
+                        duration, attempt);
             }
             return;
         }
@@ -273,19 +290,19 @@ final class BehaviourManager {
     /** An attempt for {@code eventType} failed: rest, or wait and retry with backoff, or give up at the deadline. */
     private void failed(String eventType, TypeState state, String behaviour, Problem problem, String reason) {
         long now = scheduler.now();
-        int attempt = attemptOf(state);
+        int attempt = state.attempt();
         String what = behaviour == null ? "a behaviour" : behaviour;
         switch (problem) {
         case REMOVED_BY_OPERATOR -> {
             Resting rest = resting(state, Rest.REMOVED_BY_OPERATOR, behaviour, reason);
             if (states.replace(eventType, state, rest)) {
-                int discarded = discard(eventType, "an operator removed " + what + "; not installed again until "
-                        + "an operator allows it (bis:install)");
+                int discarded = discard(eventType, "an operator removed or stopped " + what + "; not installed or"
+                        + " started again until an operator allows it (bis:allow) or installs it (bis:install)");
                 history.add(History.entry(now, "REMOVED_BY_OPERATOR", List.of(eventType), behaviour,
                         now - state.since(), attempt, discarded, reason));
                 alerts.installFailed(eventType, behaviour, problem.name(), reason, attempt, 0, discarded);
-                log.info("Not installing {} for events of {}: an operator removed it; {} held events given up on, "
-                        + "its events are counted as unhandled", what, eventType, discarded);
+                log.info("Not installing or starting {} for events of {}: an operator removed or stopped it; {} held"
+                        + " events given up on, its events are counted as unhandled", what, eventType, discarded);
             }
         }
         case NOT_FOUND -> {
@@ -294,6 +311,8 @@ final class BehaviourManager {
                 notFound(eventType, rest);
             }
         }
+        // a bundle whose bytes do not match its index (tampered or corrupted) does not fix itself: no retry
+        case HASH_MISMATCH -> giveUp(eventType, state, behaviour, problem, reason);
         default -> {
             long delay = settings.backoff(attempt);
             long deadline = state.since() + settings.installDeadlineMs();
@@ -326,13 +345,17 @@ final class BehaviourManager {
 
     private void giveUp(String eventType, TypeState state, String behaviour, Problem problem, String reason) {
         long now = scheduler.now();
-        int attempt = attemptOf(state);
+        int attempt = state.attempt();
         Resting rest = resting(state, Rest.GAVE_UP, behaviour, reason);
         if (!states.replace(eventType, state, rest)) {
             return;
         }
-        String why = "installing " + (behaviour == null ? "a behaviour" : behaviour) + " kept failing for "
-                + (now - state.since()) + " ms (install.deadline.ms " + settings.installDeadlineMs() + "): " + reason;
+        String what = behaviour == null ? "a behaviour" : behaviour;
+        String why = problem == Problem.HASH_MISMATCH
+                ? "a bundle of " + what + " does not match its index, so it is not installed nor tried again (a"
+                        + " tampered or corrupted bundle does not fix itself): " + reason
+                : "installing " + what + " kept failing for " + (now - state.since()) + " ms (install.deadline.ms "
+                        + settings.installDeadlineMs() + "): " + reason;
         int discarded = discard(eventType, why);
         history.add(History.entry(now, "GAVE_UP", List.of(eventType), behaviour, now - state.since(), attempt,
                 discarded, reason));
@@ -386,6 +409,12 @@ final class BehaviourManager {
         }
     }
 
+    private void graceEnded(String eventType, Installed installed) {
+        if (states.get(eventType) == installed && heldCount(eventType) > 0) {
+            afterGrace(eventType, installed);
+        }
+    }
+
     /** Events still held after the hand-over: the behaviour does not take them, or it went away already. */
     private void afterGrace(String eventType, Installed installed) {
         boolean active = installer.installed().stream().anyMatch(b -> "ACTIVE".equals(b.state)
@@ -436,19 +465,6 @@ final class BehaviourManager {
         return 0;
     }
 
-    private static int attemptOf(TypeState state) {
-        if (state instanceof Searching s) {
-            return s.attempt();
-        }
-        if (state instanceof Installing i) {
-            return i.attempt();
-        }
-        if (state instanceof RetryWait w) {
-            return w.attempt();
-        }
-        return state instanceof Installed ? 1 : 0;
-    }
-
     // ---------------------------------------------------------------- monitoring (any thread)
 
     Map<String, TypeState> states() {
@@ -463,10 +479,11 @@ final class BehaviourManager {
         return held.held();
     }
 
-    /** An install request in flight and the types waiting for it; owned by the BMS's thread. */
-    private record InstallJob(long id, String behaviour, long started, List<String> types) {
-        InstallJob(long id, String behaviour, long started) {
-            this(id, behaviour, started, new ArrayList<>());
-        }
+    /**
+     * An install request in flight and the types waiting for it; owned by the BMS's thread. {@code kind}: the history's
+     * word for its success: {@code INSTALLED}, {@code RESTARTED} (it was installed but not active) or
+     * {@code REINSTALLED} (its bundle had been uninstalled by someone else).
+     */
+    private record InstallJob(long id, String behaviour, String kind, List<String> types) {
     }
 }

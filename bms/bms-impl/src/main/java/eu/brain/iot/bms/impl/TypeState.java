@@ -20,6 +20,11 @@ sealed interface TypeState {
 
     long since();
 
+    /** Which install attempt the episode is at, from 1; 0 in a rest. */
+    default int attempt() {
+        return 0;
+    }
+
     /** What the bus does with an event of the type in this state, at {@code now}; {@code null}: a new episode. */
     Disposition disposition(long now);
 
@@ -58,6 +63,11 @@ sealed interface TypeState {
         @Override
         public Disposition disposition(long now) {
             return now < graceUntil ? Disposition.HOLD : null;
+        }
+
+        @Override
+        public int attempt() {
+            return 1;
         }
     }
 

@@ -185,9 +185,9 @@ class BehaviourManagerOnBusTest {
         startBms(new Settings(1_000, 60_000, 20, 40, 400, 1_000, 50, List.of(), 16));
         AlertReceiver<BehaviourInstallFailed> alerts = new AlertReceiver<>();
         bus.addBehaviour(alerts, BehaviourInstallFailed.class.getName());
-        // every attempt fails, as with a repository serving a tampered bundle
-        installer.failEveryInstall = new InstallException(Problem.HASH_MISMATCH,
-                "order.jar: SHA-256 differs from the index");
+        // every attempt fails, as with a repository that cannot be reached
+        installer.failEveryInstall = new InstallException(Problem.DOWNLOAD_FAILED,
+                "http://127.0.0.1:1/order.jar: connection refused");
         for (int i = 0; i < 10; i++) {
             Order o = new Order();
             o.publisher = "p";
@@ -200,7 +200,7 @@ class BehaviourManagerOnBusTest {
         assertThat(bus.statistics(Order.class.getName()).unhandled).isEqualTo(10);
         assertThat(counters.snapshot().discardedEvents).isEqualTo(10);
         BehaviourInstallFailed last = alerts.alerts.get(alerts.alerts.size() - 1);
-        assertThat(last.problem).isEqualTo("HASH_MISMATCH");
+        assertThat(last.problem).isEqualTo("DOWNLOAD_FAILED");
         assertThat(last.heldEvents).isEqualTo(10);
     }
 }

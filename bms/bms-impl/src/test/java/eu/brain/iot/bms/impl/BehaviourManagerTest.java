@@ -144,7 +144,7 @@ class BehaviourManagerTest {
         assertThat(installer.requests).hasSize(1);
         clock.advance(1);
         assertThat(installer.requests).hasSize(2); // after 500 ms
-        installer.last().fail(Problem.HASH_MISMATCH, "door.jar: SHA-256 differs from the index");
+        installer.last().fail(Problem.START_FAILED, "door.jar: bundle activator threw an exception");
         clock.runDue();
         clock.advance(999);
         assertThat(installer.requests).hasSize(2);
@@ -160,6 +160,30 @@ class BehaviourManagerTest {
         assertThat(alerts.of(BehaviourInstalled.class).get(0).attempt).isEqualTo(3);
         assertThat(bms.history()).extracting(e -> e.kind).containsExactly("INSTALL_FAILED", "INSTALL_FAILED",
                 "INSTALLED");
+    }
+
+    @Test
+    void aBundleThatDoesNotMatchItsIndexFailsAtOnceWithTheReasonAndIsNotRetried() {
+        bus.publish(bms, DOOR_EVENT);
+        bus.publish(bms, DOOR_EVENT);
+        clock.runDue();
+        installer.last().fail(Problem.HASH_MISMATCH, "door.jar: SHA-256 abc differs from the index's def");
+        clock.runDue();
+
+        BehaviourInstallFailed alert = alerts.of(BehaviourInstallFailed.class).get(0);
+        assertThat(alert.problem).isEqualTo("HASH_MISMATCH");
+        assertThat(alert.reason).contains("SHA-256 abc differs");
+        assertThat(alert.finalFailure).isTrue();
+        assertThat(alert.nextRetry).isZero();
+        assertThat(alert.heldEvents).isEqualTo(2);
+        assertThat(bus.discards).singleElement().asString().contains("does not match its index")
+                .contains("nor tried again");
+        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.LAST_RESORT);
+        assertThat(bms.history()).extracting(e -> e.kind).containsExactly("GAVE_UP");
+        assertThat(log.count("error", "Gave up installing")).isEqualTo(1);
+        clock.advance(30_000);
+        assertThat(installer.requests).as("no retry").hasSize(1);
+        assertThat(alerts.of(BehaviourInstallFailed.class)).hasSize(1);
     }
 
     @Test
@@ -226,11 +250,54 @@ class BehaviourManagerTest {
         clock.runDue();
         clock.advance(SETTINGS.handoverGraceMs());
 
-        // its bundle stopped: the bus puts its type to the policy again
+        // its bundle stopped: the bus puts its type to the policy again, and the installer lists it as not active
+        InstalledBehaviour listed = new InstalledBehaviour();
+        listed.symbolicName = DOOR;
+        listed.version = "0.1.0";
+        listed.state = "RESOLVED";
+        installer.active.add(listed);
         assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.HOLD);
         clock.runDue();
-        assertThat(installer.requests).hasSize(2); // the installer restarts it (or installs it again)
+        assertThat(installer.requests).hasSize(2); // the same request: the installer starts it again
         assertThat(installer.finds).hasValue(2);
+        assertThat(installer.last().request().reason).contains(DOOR + " is installed but not taking events (RESOLVED)")
+                .contains("started again");
+        installer.last().succeed();
+        bus.register(DOOR_EVENT); // started again: the bus hands the held event over
+        clock.runDue();
+        clock.advance(SETTINGS.handoverGraceMs());
+
+        // its bundle uninstalled by someone else (not bis:uninstall): the same request installs it again
+        listed.state = "UNINSTALLED";
+        assertThat(bus.publish(bms, DOOR_EVENT)).isEqualTo(Disposition.HOLD);
+        clock.runDue();
+        assertThat(installer.requests).hasSize(3);
+        assertThat(installer.last().request().reason).contains("had been uninstalled (not with bis:uninstall)");
+        installer.last().succeed();
+        bus.register(DOOR_EVENT);
+        clock.runDue();
+        assertThat(bus.handedOver).isEqualTo(3);
+        assertThat(bms.history()).extracting(e -> e.kind).containsExactly("INSTALLED", "RESTARTED", "REINSTALLED");
+    }
+
+    @Test
+    void eventsStillHeldWhenTheGracePeriodEndsAreDecidedAtOnceNotAtTheNextSweep() {
+        ManualScheduler time = new ManualScheduler();
+        BehaviourManager manager = new BehaviourManager(installer, bus, time, new Alerts(alerts, Runnable::run,
+                log.logger, new LongAdder()), log.logger, counters,
+                new Settings(1_000, 60_000, 500, 4_000, 10_000, 1_000, 60_000, List.of(), 16)); // sweep: 1 min
+        manager.start();
+        bus.publish(manager, DOOR_EVENT);
+        time.runDue();
+        installer.last().succeed(); // but its behaviour went away before it took the held event
+        time.runDue();
+
+        time.advance(999);
+        assertThat(installer.requests).hasSize(1);
+        time.advance(1);
+        time.runDue();
+        assertThat(installer.requests).as("asked again as the grace period ended, not at the sweep a minute later")
+                .hasSize(2);
     }
 
     @Test

@@ -48,8 +48,7 @@ public final class Installer implements BundleInstaller {
     private final ChoicePolicy policy;
     private final Ledger ledger;
     private final Transaction transaction;
-    private final Activation activation;
-    private final long activationTimeoutMillis;
+    private final Restarter restarter;
     private final ExecutorService executor;
     private final PromiseFactory promises;
     private final Consumer<String> warn;
@@ -70,20 +69,19 @@ public final class Installer implements BundleInstaller {
         Activation activation = new Activation(context, statistics);
         Transaction transaction = new Transaction(context, resolver, repositories, reader, activation,
                 activationTimeoutMillis, warn);
-        return new Installer(context, repositories, new ChoicePolicy(prefer), ledger, transaction, activation,
-                activationTimeoutMillis, executor, promises, warn, info);
+        return new Installer(context, repositories, new ChoicePolicy(prefer), ledger, transaction,
+                new Restarter(context, activation, activationTimeoutMillis, info), executor, promises, warn, info);
     }
 
     private Installer(BundleContext context, Repositories repositories, ChoicePolicy policy, Ledger ledger,
-            Transaction transaction, Activation activation, long activationTimeoutMillis, ExecutorService executor,
-            PromiseFactory promises, Consumer<String> warn, Consumer<String> info) {
+            Transaction transaction, Restarter restarter, ExecutorService executor, PromiseFactory promises,
+            Consumer<String> warn, Consumer<String> info) {
         this.context = context;
         this.repositories = repositories;
         this.policy = policy;
         this.ledger = ledger;
         this.transaction = transaction;
-        this.activation = activation;
-        this.activationTimeoutMillis = activationTimeoutMillis;
+        this.restarter = restarter;
         this.executor = executor;
         this.promises = promises;
         this.warn = warn;
@@ -122,9 +120,10 @@ public final class Installer implements BundleInstaller {
         List<BehaviourResource> allowed = request.operator ? candidates
                 : candidates.stream().filter(c -> !ledger.isBlocked(c.symbolicName())).toList();
         if (allowed.isEmpty()) {
-            return failed(Problem.REMOVED_BY_OPERATOR, candidates.get(0).symbolicName() + " was removed by an"
-                    + " operator, so it is not installed automatically; 'bis:allow " + candidates.get(0).symbolicName()
-                    + "' or 'bis:install " + candidates.get(0).symbolicName() + "' in the shell brings it back");
+            String name = candidates.get(0).symbolicName();
+            return failed(Problem.REMOVED_BY_OPERATOR, name + " was removed or stopped by an operator ("
+                    + ledger.blocked().get(name) + "), so it is not installed or started automatically; 'bis:allow "
+                    + name + "' or 'bis:install " + name + "' in the shell brings it back");
         }
         BehaviourResource chosen = allowed.get(0);
         String reason = request.reason == null || request.reason.isBlank() ? "requested" : request.reason;
@@ -150,19 +149,58 @@ public final class Installer implements BundleInstaller {
 
     @Override
     public Promise<InstalledBehaviour> uninstall(String symbolicName, String reason, boolean byOperator) {
+        return onInstallerThread("uninstall of " + symbolicName, () -> runUninstall(symbolicName, reason, byOperator));
+    }
+
+    /**
+     * An operator's stop ({@code bis:stop}): the behaviour's bundle is stopped, and it is not started or installed
+     * again by an automatic request until an operator allows it ({@link #allow}) or installs it ({@code bis:install},
+     * which starts it at once). A bundle stopped by anything else (a failure, Gogo's {@code stop}) is started again by
+     * the next request for it.
+     */
+    public Promise<InstalledBehaviour> stop(String symbolicName, String reason) {
+        return onInstallerThread("stop of " + symbolicName, () -> {
+            BehaviourRecord record = ledger.get(symbolicName).orElseThrow(() -> new InstallException(
+                    Problem.NOT_INSTALLED, symbolicName + " is not installed by the Bundle Installer ('bis:list' shows"
+                            + " what is)"));
+            ledger.block(symbolicName, "stopped-by-operator", reason);
+            Bundle own = context.getBundle(record.own().location());
+            try {
+                if (own != null) {
+                    own.stop();
+                }
+            } catch (BundleException e) {
+                throw new InstallException(Problem.START_FAILED, symbolicName + " (bundle " + own.getBundleId()
+                        + ") failed to stop: " + e.getMessage(), e);
+            }
+            info.accept("stopped " + symbolicName + " " + record.version() + " (" + reason + ")");
+            return dto(record);
+        });
+    }
+
+    /** @return when and why an installed behaviour was last started again, and how often, or empty */
+    public java.util.Optional<Restart> lastRestart(String symbolicName) {
+        return ledger.lastRestart(symbolicName);
+    }
+
+    /** One step run on the installer's thread, answered through a promise. */
+    private interface Step {
+        InstalledBehaviour run() throws InstallException, InterruptedException;
+    }
+
+    private Promise<InstalledBehaviour> onInstallerThread(String what, Step step) {
         Deferred<InstalledBehaviour> deferred = promises.deferred();
         try {
             executor.execute(() -> {
                 try {
-                    deferred.resolve(runUninstall(symbolicName, reason, byOperator));
+                    deferred.resolve(step.run());
                 } catch (InstallException e) {
                     deferred.fail(e);
                 } catch (InterruptedException e) {
                     deferred.fail(new InstallException(Problem.CLOSED, "the Bundle Installer is stopping"));
                 } catch (RuntimeException e) {
-                    warn.accept("uninstall of " + symbolicName + " failed: " + e);
-                    deferred.fail(new InstallException(Problem.NOT_INSTALLED, "uninstall of " + symbolicName
-                            + " failed: " + e, e));
+                    warn.accept(what + " failed: " + e);
+                    deferred.fail(new InstallException(Problem.NOT_INSTALLED, what + " failed: " + e, e));
                 }
             });
         } catch (RejectedExecutionException e) {
@@ -260,11 +298,26 @@ public final class Installer implements BundleInstaller {
                 present.add(b);
             }
         }
+        boolean blocked = ledger.isBlocked(r.symbolicName());
         if (present.size() == r.bundles().size()) {
             ledger.adopt(r);
-            ensureActive(r, present.get(0));
+            if (blocked) { // stopped by an operator: it stays stopped
+                info.accept("journal: " + r.symbolicName() + " " + r.version() + " is still installed, taken back;"
+                        + " not started, an operator stopped it");
+                return;
+            }
+            String was = Restarter.stateForPeople(present.get(0));
+            if (restarter.ensureActive(r, present.get(0))) {
+                ledger.restarted(r, "started again when the installer took it back from its journal (its bundle was "
+                        + was + ")", System.currentTimeMillis());
+            }
             info.accept("journal: " + r.symbolicName() + " " + r.version() + " is still installed, taken back");
             return;
+        }
+        if (blocked) {
+            throw new InstallException(Problem.REMOVED_BY_OPERATOR, "an operator stopped it ("
+                    + ledger.blocked().get(r.symbolicName()) + "); 'bis:install " + r.symbolicName()
+                    + "' installs and starts it again");
         }
         List<BehaviourResource> offered = policy.byName(repositories.resources(), r.symbolicName(),
                 "[" + r.version() + "," + r.version() + "]");
@@ -286,7 +339,11 @@ public final class Installer implements BundleInstaller {
             if (record != null) {
                 Bundle own = context.getBundle(record.own().location());
                 if (own != null && own.getState() != Bundle.UNINSTALLED) {
-                    ensureActive(record, own);
+                    String was = Restarter.stateForPeople(own);
+                    if (restarter.ensureActive(record, own)) {
+                        ledger.restarted(record, "started again (its bundle was " + was + "): " + reason,
+                                System.currentTimeMillis());
+                    }
                     done(chosen, deferred, record);
                     return;
                 }
@@ -294,6 +351,8 @@ public final class Installer implements BundleInstaller {
                         + " again");
                 removeBundles(record);
                 ledger.remove(record.symbolicName(), "vanished", "its bundle was uninstalled by someone else");
+                reason = "installed again (its bundle had been uninstalled by someone else, not with bis:uninstall): "
+                        + reason;
             }
             for (Bundle b : context.getBundles()) {
                 if (chosen.symbolicName().equals(b.getSymbolicName())) {
@@ -341,38 +400,11 @@ public final class Installer implements BundleInstaller {
         return record;
     }
 
-    /** Starts a behaviour that is installed but not active (and the bundles it needs), then waits for the bus. */
-    private void ensureActive(BehaviourRecord record, Bundle own) throws InstallException, InterruptedException {
-        if (own.getState() == Bundle.ACTIVE && Activation.hasBehaviours(own)) {
-            return;
-        }
-        List<BundleFact> startOrder = new ArrayList<>(record.bundles());
-        startOrder.add(startOrder.remove(0)); // dependencies first, the behaviour last
-        for (BundleFact f : startOrder) {
-            Bundle b = context.getBundle(f.location());
-            if (b != null && b.getState() != Bundle.ACTIVE
-                    && b.getHeaders().get(org.osgi.framework.Constants.FRAGMENT_HOST) == null) {
-                try {
-                    b.start();
-                } catch (BundleException e) {
-                    throw new InstallException(Problem.START_FAILED, f.symbolicName() + " (bundle " + b.getBundleId()
-                            + ") is installed but failed to start again: " + e.getMessage(), e);
-                }
-            }
-        }
-        if (activation.await(own, activationTimeoutMillis) == null) {
-            throw new InstallException(Problem.ACTIVATION_TIMEOUT, record.symbolicName() + " was started again, but"
-                    + " no smart behaviour of it was registered with the bus within " + activationTimeoutMillis
-                    + " ms; see 'scr:info' in the shell");
-        }
-        info.accept("restarted " + record.symbolicName() + " " + record.version());
-    }
-
     private InstalledBehaviour runUninstall(String symbolicName, String reason, boolean byOperator)
             throws InstallException, InterruptedException {
         BehaviourRecord record = ledger.get(symbolicName).orElse(null);
         if (byOperator) {
-            ledger.block(symbolicName, reason == null ? "removed by an operator" : reason);
+            ledger.block(symbolicName, "removed-by-operator", reason == null ? "removed by an operator" : reason);
         }
         if (record == null) {
             if (byOperator) {

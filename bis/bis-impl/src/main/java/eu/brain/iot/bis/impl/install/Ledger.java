@@ -27,6 +27,8 @@ final class Ledger {
     private final Map<String, BehaviourRecord> behaviours = new LinkedHashMap<>();
     private final Map<String, BehaviourRecord> pending = new LinkedHashMap<>();
     private final Map<String, String> blocked = new LinkedHashMap<>();
+    /** The last time each installed behaviour was started again, and why (since this start of the installer). */
+    private final Map<String, Restart> restarts = new LinkedHashMap<>();
 
     Ledger(Journal journal, Journal.State loaded, Consumer<String> error) {
         this.journal = journal;
@@ -61,7 +63,19 @@ final class Ledger {
         pending.remove(record.symbolicName());
     }
 
+    /** Records that an installed behaviour, found not active, was started again (a history line). */
+    synchronized void restarted(BehaviourRecord record, String why, long at) {
+        Restart last = restarts.get(record.symbolicName());
+        restarts.put(record.symbolicName(), new Restart(at, why, last == null ? 1 : last.count() + 1));
+        save("restarted", record.symbolicName(), record.version(), why);
+    }
+
+    synchronized Optional<Restart> lastRestart(String symbolicName) {
+        return Optional.ofNullable(restarts.get(symbolicName));
+    }
+
     synchronized void remove(String symbolicName, String what, String reason) {
+        restarts.remove(symbolicName);
         BehaviourRecord record = behaviours.remove(symbolicName);
         pending.remove(symbolicName);
         save(what, symbolicName, record == null ? null : record.version(), reason);
@@ -78,9 +92,10 @@ final class Ledger {
         return blocked.containsKey(symbolicName);
     }
 
-    synchronized void block(String symbolicName, String reason) {
+    /** @param what the history line's word: {@code removed-by-operator} or {@code stopped-by-operator} */
+    synchronized void block(String symbolicName, String what, String reason) {
         blocked.put(symbolicName, reason);
-        save("removed-by-operator", symbolicName, null, reason);
+        save(what, symbolicName, null, reason);
     }
 
     synchronized boolean allow(String symbolicName, String why) {

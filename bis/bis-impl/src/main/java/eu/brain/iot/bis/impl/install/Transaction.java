@@ -236,8 +236,13 @@ final class Transaction {
             // A launcher may give bundles installed at run time a start level above the one the framework is at
             // (bnd's launcher: above every run bundle), and start() would then only mark them for later: a
             // behaviour would not run until the framework climbed there. The installer's own level is reached.
-            installed.adapt(BundleStartLevel.class)
-                    .setStartLevel(context.getBundle().adapt(BundleStartLevel.class).getStartLevel());
+            // Set only when it differs: Felix applies the change later on its start-level thread, which logs an
+            // ERROR ("Bundle in unexpected state") if the bundle is uninstalled (a rollback) before it gets there.
+            BundleStartLevel level = installed.adapt(BundleStartLevel.class);
+            int own = context.getBundle().adapt(BundleStartLevel.class).getStartLevel();
+            if (level.getStartLevel() != own) {
+                level.setStartLevel(own);
+            }
             return installed;
         } catch (BundleException e) {
             throw new InstallException(Problem.START_FAILED, r + " from " + r.url() + " could not be installed: "

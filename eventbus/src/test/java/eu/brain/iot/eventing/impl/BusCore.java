@@ -16,8 +16,10 @@ import eu.brain.iot.eventing.spi.HeldType;
 import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
 /**
- * The real bus core (package-private in the bus bundle) for the BMS's unit tests: the same class, on the test's
- * class path, without OSGi. It lives in the bus's package in this module's test tree only; nothing ships it.
+ * The real bus core (package-private in the bus bundle) for other modules' unit tests (the BMS's): the same class, on
+ * the test's class path, without OSGi. It is shipped in this module's test-support jar only (classifier
+ * {@code bus-core}, see pom.xml), never in a bundle; it lives here, beside the core it wraps, so that a change of the
+ * core is compiled against it in the bus's own build.
  */
 public final class BusCore implements EventBus, HeldEvents {
 
