@@ -1,9 +1,12 @@
 package eu.brain.iot.robotsim;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import eu.brain.iot.robotsim.fault.FaultTable;
 import eu.brain.iot.robotsim.http.HttpServer;
 import eu.brain.iot.robotsim.view.DoorView;
+import eu.brain.iot.robotsim.view.Json;
 import eu.brain.iot.robotsim.view.RobotView;
+import eu.brain.iot.robotsim.view.WorldDocument;
 import eu.brain.iot.robotsim.world.Placement;
 import eu.brain.iot.robotsim.world.World;
 import eu.brain.iot.robotsim.world.WarehouseMap;
@@ -83,7 +86,7 @@ public final class RobotSim implements AutoCloseable {
             server = HttpServer.start(config.bindAddress(), config.port(), config.ioThreads(),
                     new HttpServer.Limits(config.allowedHosts(), config.requestTimeoutMillis()),
                     new HttpServer.Wiring(worldThread, worldThread.views(), faults, robots, doors,
-                            List.copyOf(robots.keySet()), index));
+                            List.copyOf(robots.keySet()), index, config.stepMillis()));
         } catch (IOException | RuntimeException e) {
             worldThread.close();
             throw e;
@@ -167,6 +170,18 @@ public final class RobotSim implements AutoCloseable {
      */
     public <T> T inspect(Function<World, T> look) {
         return await(world.call(a -> look.apply(a.world())));
+    }
+
+    /** What {@code GET /world/counters} answers now (waits, deadlocks, door openings, carts in storage). */
+    public JsonNode counters() {
+        return inspect(w -> Json.MAPPER.valueToTree(
+                WorldDocument.counters(w, config.stepMillis())));
+    }
+
+    /** What {@code GET /world} answers now: map, robots, carts, doors and counters. */
+    public JsonNode worldDocument() {
+        return inspect(w -> Json.MAPPER.valueToTree(
+                WorldDocument.world(w, config.stepMillis())));
     }
 
     private static <T> T await(java.util.concurrent.CompletableFuture<T> f) {

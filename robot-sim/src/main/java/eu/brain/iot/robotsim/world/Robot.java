@@ -39,6 +39,14 @@ public final class Robot {
     boolean deadlockCounted;
     long nearMisses;
     long deadlocks;
+    /** Steps spent stopped behind another robot ({@code detect} 1), all waits together. */
+    long waitSteps;
+    /** Length in steps of the wait going on now, 0 when not waiting behind a robot. */
+    long waitingSteps;
+    /** The longest single wait behind another robot, in steps (the one going on now included). */
+    long longestWaitSteps;
+    /** Waits behind another robot that have ended (the robot moved on, got new orders or went offline). */
+    long waitsEnded;
     boolean offline;
 
     Robot(int index, String id, int x, int y) {
@@ -87,6 +95,26 @@ public final class Robot {
 
     public long deadlocks() {
         return deadlocks;
+    }
+
+    /** Steps spent stopped behind another robot, all waits together. */
+    public long waitSteps() {
+        return waitSteps;
+    }
+
+    /** Length in steps of the wait behind another robot going on now, 0 when none. */
+    public long waitingSteps() {
+        return waitingSteps;
+    }
+
+    /** The longest single wait behind another robot so far, in steps. */
+    public long longestWaitSteps() {
+        return longestWaitSteps;
+    }
+
+    /** Waits behind another robot that have ended. */
+    public long waitsEnded() {
+        return waitsEnded;
     }
 
     public boolean offline() {
