@@ -34,7 +34,7 @@ public final class WorldDocument {
     }
 
     /** {@code GET /world}: the map, robots, carts, doors and counters. */
-    public static Map<String, Object> world(World w, long stepMillis) {
+    public static Map<String, Object> world(World w, long stepMillis, CommandCounts commands) {
         Map<String, Object> doc = new LinkedHashMap<>();
         doc.put("name", w.map().name());
         doc.put("step", w.step());
@@ -56,7 +56,7 @@ public final class WorldDocument {
             doors.add(DoorView.of(w.door(i)));
         }
         doc.put("doors", doors);
-        doc.put("counters", counters(w, stepMillis));
+        doc.put("counters", counters(w, stepMillis, commands));
         return doc;
     }
 
@@ -65,8 +65,9 @@ public final class WorldDocument {
      * storage, in total and per robot and door.
      *
      * @param stepMillis warehouse time of one step, to give waits in milliseconds too
+     * @param commands   the commands the fleet answered over HTTP (kept outside the world, by the server)
      */
-    public static Map<String, Object> counters(World w, long stepMillis) {
+    public static Map<String, Object> counters(World w, long stepMillis, CommandCounts commands) {
         Map<String, Object> doc = new LinkedHashMap<>();
         doc.put("step", w.step());
         doc.put("stepMillis", stepMillis);
@@ -102,6 +103,7 @@ public final class WorldDocument {
         doc.put("doorOpenings", openings);
         doc.put("carts", w.cartCount());
         doc.put("cartsInStorage", cartsInStorage(w));
+        doc.put("commands", commands);
         doc.put("perRobot", perRobot);
         doc.put("perDoor", perDoor);
         return doc;

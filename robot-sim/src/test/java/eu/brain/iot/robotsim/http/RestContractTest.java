@@ -224,6 +224,21 @@ class RestContractTest {
         assertThat(c.get("cartsInStorage").asLong()).isEqualTo(1);
         assertThat(c.get("doorOpenings").asLong()).isEqualTo(1);
         assertThat(c.get("perDoor").get("door1").get("openings").asLong()).isEqualTo(1);
+        JsonNode commands = c.get("commands");
+        assertThat(commands.get("accepted").asLong()).as("3 go-tos, a pick, a place, a cancel, a door").isEqualTo(7);
+        assertThat(commands.get("refused").asLong()).isZero();
+        client.post("robot2/robot_local_control/NavigationComponent/GoToComponent/add", "{\"x\":0,\"y\":0}");
+        client.post("robot2/robot_local_control/NavigationComponent/PlaceComponent/add", "{}");
+        client.get("robot2/robot_local_control/NavigationComponent/PlaceComponent/query_state");
+        sim.faults().setOwn(1, new eu.brain.iot.robotsim.fault.FaultSettings(0, 0, 0, 0, true));
+        client.post("robot2/robot_local_control/NavigationComponent/GoToComponent/add", "{\"x\":2,\"y\":3}");
+        commands = client.get("world/counters").json().get("commands");
+        assertThat(commands.get("received").asLong()).as("a query is no command").isEqualTo(10);
+        assertThat(commands.get("refused").asLong()).as("a place is checked when it starts, not when added")
+                .isEqualTo(2);
+        assertThat(commands.get("refusedByStatus").get("422").asLong()).as("a goal in a wall").isEqualTo(1);
+        assertThat(commands.get("refusedByStatus").get("503").asLong()).as("offline").isEqualTo(1);
+        c = client.get("world/counters").json();
         assertThat(sim.counters().toString()).as("the Java API answers the same").isEqualTo(c.toString());
         assertThat(sim.worldDocument().get("counters").toString()).isEqualTo(c.toString());
     }
