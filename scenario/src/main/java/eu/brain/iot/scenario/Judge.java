@@ -65,15 +65,17 @@ final class Judge {
         long accepted = end.commandsAccepted();
         long refused = end.commandsRefused();
         Map<String, Long> by = end.refusedByStatus();
+        long failed = end.missionsFailed();
         String counts = accepted + " accepted, " + refused + " refused"
                 + (by.isEmpty() ? "" : " (by HTTP status: " + by.entrySet().stream()
-                        .map(e -> e.getKey() + " x" + e.getValue()).collect(Collectors.joining(", ")) + ")");
+                        .map(e -> e.getKey() + " x" + e.getValue()).collect(Collectors.joining(", ")) + ")")
+                + (failed == 0 ? "" : ", " + failed + " missions failed when they started");
         String name = "every command accepted or its refusal handled";
         if (accepted + refused == 0) {
             return new Verdict.Check(name, completed, completed ? "no command was needed"
                     : "no command reached the fleet: nothing drove the robots");
         }
-        if (refused == 0) {
+        if (refused == 0 && failed == 0) {
             return new Verdict.Check(name, true, counts);
         }
         return new Verdict.Check(name, completed, counts + (completed ? "; the run completed in spite of them"

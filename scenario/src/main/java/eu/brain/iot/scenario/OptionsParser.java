@@ -156,34 +156,28 @@ final class OptionsParser {
     }
 
     private long whole(String name, long fallback, long min, long max) throws UsageException {
-        String v = text(name, null);
-        if (v == null) {
-            return fallback;
-        }
-        try {
-            long n = Long.parseLong(v);
-            if (n >= min && n <= max) {
-                return n;
-            }
-        } catch (NumberFormatException e) {
-            // said below
-        }
-        throw new UsageException("--" + name + " must be a whole number " + min + ".." + max + ", found '" + v + "'");
+        return number(name, fallback, min, max, Long::parseLong, "a whole number");
     }
 
     private double decimal(String name, double fallback, double min, double max) throws UsageException {
+        return number(name, fallback, min, max, Double::parseDouble, "a number");
+    }
+
+    private <T extends Comparable<T>> T number(String name, T fallback, T min, T max,
+                                               java.util.function.Function<String, T> parse, String kind)
+            throws UsageException {
         String v = text(name, null);
         if (v == null) {
             return fallback;
         }
         try {
-            double n = Double.parseDouble(v);
-            if (n >= min && n <= max) {
+            T n = parse.apply(v);
+            if (n.compareTo(min) >= 0 && n.compareTo(max) <= 0) {
                 return n;
             }
         } catch (NumberFormatException e) {
             // said below
         }
-        throw new UsageException("--" + name + " must be a number " + min + ".." + max + ", found '" + v + "'");
+        throw new UsageException("--" + name + " must be " + kind + " " + min + ".." + max + ", found '" + v + "'");
     }
 }

@@ -66,6 +66,8 @@ final class ReportWriter {
         f.put("doorOpenings", end.doorOpenings());
         f.put("commandsAccepted", end.commandsAccepted());
         f.put("commandsRefused", end.commandsRefused());
+        f.put("missionsFailed", end.missionsFailed());
+        f.put("missionsCancelled", end.missionsCancelled());
         ObjectNode by = f.putObject("commandsRefusedByStatus");
         end.refusedByStatus().forEach(by::put);
         BusStats bus = run.bus();

@@ -28,8 +28,9 @@ final class Summary {
                 end.nearMisses() - start.nearMisses(), waits.values().stream().mapToLong(Long::longValue).sum(),
                 WarehouseTime.format(Figures.quantile(waits, 0.5) * end.stepMillis()),
                 WarehouseTime.format(end.longestWaitMs()), 100 * Figures.waitShare(start, end), end.deadlocks());
-        out.printf("door openings %d; commands %d accepted, %d refused%n", end.doorOpenings(), end.commandsAccepted(),
-                end.commandsRefused());
+        out.printf("door openings %d; commands %d accepted, %d refused; missions %d failed, %d cancelled%n",
+                end.doorOpenings(), end.commandsAccepted(), end.commandsRefused(), end.missionsFailed(),
+                end.missionsCancelled());
         if (run.bus() != null) {
             out.printf(Locale.ROOT, "bus: %d events (%.0f/s), %d commands published, %d outcomes; node CPU %.1f s "
                             + "(%.0f%% of one core)%n", run.bus().totalPublished(),

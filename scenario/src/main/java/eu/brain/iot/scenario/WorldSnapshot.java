@@ -131,6 +131,15 @@ record WorldSnapshot(JsonNode doc) {
         return counters().path("commands").path("refused").asLong();
     }
 
+    /** Missions that failed when their turn came (a precondition that no longer held, no path). */
+    long missionsFailed() {
+        return counters().path("missions").path("failed").asLong();
+    }
+
+    long missionsCancelled() {
+        return counters().path("missions").path("cancelled").asLong();
+    }
+
     /** Refused commands by HTTP status ("503": the robot was offline). */
     Map<String, Long> refusedByStatus() {
         Map<String, Long> by = new TreeMap<>();

@@ -111,6 +111,18 @@ class JudgeTest {
     }
 
     @Test
+    void aMissionThatFailedWhenItStartedCountsAsARefusal() throws Exception {
+        try (Fleet f = Fleet.paper()) {
+            assertThat(f.pick("robot1")).as("queued: checked when it starts").isEqualTo(200);
+            f.step(2);
+            Verdict v = Judge.judge(f.world(), LIMIT_MS, 1_000);
+            assertThat(detail(v, "command")).isEqualTo("1 accepted, 0 refused, 1 missions failed when they started; "
+                    + "the run did not complete: refusals may not have been handled");
+            assertThat(check(v, "command").passed()).isFalse();
+        }
+    }
+
+    @Test
     void nothingDoneIsSaidPlainly() throws Exception {
         try (Fleet f = Fleet.paper()) {
             f.step(10);

@@ -29,6 +29,11 @@ public final class WorldDocument {
                                 long longestWaitSteps, long longestWaitMs, long waitsEnded) {
     }
 
+    /** Missions that ended, all robots together. */
+    @JsonPropertyOrder({"finished", "failed", "cancelled"})
+    public record MissionCounts(long finished, long failed, long cancelled) {
+    }
+
     /** One door's counters: how many times it began to open (closed or closing to opening or open). */
     public record DoorCounters(long openings) {
     }
@@ -77,6 +82,9 @@ public final class WorldDocument {
         long longest = 0;
         long waitingNow = 0;
         long ended = 0;
+        long finished = 0;
+        long failed = 0;
+        long cancelled = 0;
         Map<String, RobotCounters> perRobot = new LinkedHashMap<>();
         for (int i = 0; i < w.robotCount(); i++) {
             var r = w.robot(i);
@@ -86,6 +94,9 @@ public final class WorldDocument {
             longest = Math.max(longest, r.longestWaitSteps());
             waitingNow += r.waitingSteps() > 0 ? 1 : 0;
             ended += r.waitsEnded();
+            finished += r.missionsFinished();
+            failed += r.missionsFailed();
+            cancelled += r.missionsCancelled();
         }
         doc.put("waitSteps", waitSteps);
         doc.put("longestWaitSteps", longest);
@@ -104,6 +115,7 @@ public final class WorldDocument {
         doc.put("carts", w.cartCount());
         doc.put("cartsInStorage", cartsInStorage(w));
         doc.put("commands", commands);
+        doc.put("missions", new MissionCounts(finished, failed, cancelled));
         doc.put("perRobot", perRobot);
         doc.put("perDoor", perDoor);
         return doc;

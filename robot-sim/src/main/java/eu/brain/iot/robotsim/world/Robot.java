@@ -48,6 +48,10 @@ public final class Robot {
     /** Waits behind another robot that have ended (the robot moved on, got new orders or went offline). */
     long waitsEnded;
     boolean offline;
+    /** Missions that ended: finished, failed (a precondition or no path), cancelled. */
+    long missionsFinished;
+    long missionsFailed;
+    long missionsCancelled;
 
     Robot(int index, String id, int x, int y) {
         this.index = index;
@@ -117,6 +121,19 @@ public final class Robot {
         return waitsEnded;
     }
 
+    public long missionsFinished() {
+        return missionsFinished;
+    }
+
+    /** Missions that failed by themselves (a precondition that did not hold when they started, no path). */
+    public long missionsFailed() {
+        return missionsFailed;
+    }
+
+    public long missionsCancelled() {
+        return missionsCancelled;
+    }
+
     public boolean offline() {
         return offline;
     }
@@ -162,6 +179,13 @@ public final class Robot {
     }
 
     void remember(Mission ended) {
+        if (ended.state() == MissionState.FINISHED) {
+            missionsFinished++;
+        } else if ("cancelled".equals(ended.reason())) {
+            missionsCancelled++;
+        } else {
+            missionsFailed++;
+        }
         history.addFirst(ended);
         if (history.size() > HISTORY) {
             history.removeLast();

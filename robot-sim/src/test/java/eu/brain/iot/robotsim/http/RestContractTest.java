@@ -238,6 +238,12 @@ class RestContractTest {
                 .isEqualTo(2);
         assertThat(commands.get("refusedByStatus").get("422").asLong()).as("a goal in a wall").isEqualTo(1);
         assertThat(commands.get("refusedByStatus").get("503").asLong()).as("offline").isEqualTo(1);
+        sim.faults().setOwn(1, null);
+        sim.step(2);
+        JsonNode missions = client.get("world/counters").json().get("missions");
+        assertThat(missions.get("finished").asLong()).as("robot3's four missions").isEqualTo(4);
+        assertThat(missions.get("cancelled").asLong()).as("robot1's go-to").isEqualTo(1);
+        assertThat(missions.get("failed").asLong()).as("robot2's place without a cart").isEqualTo(1);
         c = client.get("world/counters").json();
         assertThat(sim.counters().toString()).as("the Java API answers the same").isEqualTo(c.toString());
         assertThat(sim.worldDocument().get("counters").toString()).isEqualTo(c.toString());
