@@ -8,6 +8,7 @@ import java.io.IOException;
 import java.io.PrintStream;
 import java.net.InetSocketAddress;
 import java.net.Socket;
+import java.net.URI;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -64,6 +65,58 @@ class ScenarioProcessTest {
         assertThat(node.map(ProcessHandle::isAlive).orElse(false)).as("the node's JVM is stopped").isFalse();
         int simPort = Integer.parseInt(find(text, "at http://127\\.0\\.0\\.1:(\\d+)/"));
         assertThat(listening(simPort)).as("robot-sim is closed").isFalse();
+    }
+
+    /**
+     * The success path, with the test in the behaviours' place: once the run has started, the test sends robot3's
+     * errands through the node's edge (its REST API's ACT endpoints, which command robot-sim), and the run ends by
+     * itself when every cart is in storage and robot3 is back, with exit 0 and the figures in the report.
+     */
+    @Test
+    void aRunDrivenThroughTheEdgeEndsByItselfAndPasses(@TempDir Path run) throws Exception {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        PrintStream print = new PrintStream(out, true, StandardCharsets.UTF_8);
+        java.util.concurrent.CompletableFuture<Integer> code = java.util.concurrent.CompletableFuture.supplyAsync(
+                () -> Main.run(new String[] {"--root", ROOT.toString(), "--no-behaviours", "--deadline", "10",
+                        "--speed", "20", "--run-dir", run.toString()}, print, print));
+        org.awaitility.Awaitility.await("the run's start").atMost(java.time.Duration.ofSeconds(150))
+                .until(() -> out.toString(StandardCharsets.UTF_8).contains("the scenario starts") || code.isDone());
+        String started = out.toString(StandardCharsets.UTF_8);
+        assertThat(started).contains("the scenario starts");
+        URI edge = URI.create(find(started, "REST API (http://127\\.0\\.0\\.1:\\d+/sensinact)") + "/providers/");
+        act(edge, "door1", "open", "{}");
+        int[][] carts = {{3, 7}, {10, 7}, {16, 7}};
+        int[][] storage = {{12, 2}, {14, 2}, {16, 2}};
+        for (int i = 0; i < carts.length; i++) {
+            act(edge, "robot3", "goTo", "{\"x\":" + carts[i][0] + ",\"y\":" + carts[i][1] + "}");
+            act(edge, "robot3", "pick", "{}");
+            act(edge, "robot3", "goTo", "{\"x\":" + storage[i][0] + ",\"y\":" + storage[i][1] + "}");
+            act(edge, "robot3", "place", "{}");
+        }
+        act(edge, "robot3", "goTo", "{\"x\":6,\"y\":1}");
+        int exit = code.get(150, java.util.concurrent.TimeUnit.SECONDS);
+        String text = out.toString(StandardCharsets.UTF_8);
+        assertThat(exit).as(text).isZero();
+        assertThat(text).contains("carts 3/3 delivered", "scenario PASSED",
+                "PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
+                "PASS  every command accepted or its refusal handled: 14 accepted, 0 refused");
+        JsonNode figures = ReportWriter.MAPPER.readTree(run.resolve("report.json").toFile()).path("figures");
+        assertThat(figures.path("warehouseSecondsUntilAllDelivered").asDouble()).isPositive();
+        assertThat(figures.path("cartsPerWarehouseHour").asDouble()).isPositive();
+        assertThat(figures.path("doorOpenings").asInt()).isEqualTo(1);
+        assertThat(figures.path("commandsAccepted").asInt()).isEqualTo(14);
+        long nodePid = Long.parseLong(find(text, "node: pid (\\d+)"));
+        assertThat(ProcessHandle.of(nodePid).map(ProcessHandle::isAlive).orElse(false)).isFalse();
+    }
+
+    /** An ACT through the edge's REST API; it answers 200 when the fleet accepted the command. */
+    private static void act(URI providers, String device, String action, String body) throws Exception {
+        java.net.http.HttpResponse<String> answer = java.net.http.HttpClient.newHttpClient().send(
+                java.net.http.HttpRequest.newBuilder(providers.resolve(device + "/services/control/resources/"
+                                + action + "/act")).header("Content-Type", "application/json")
+                        .POST(java.net.http.HttpRequest.BodyPublishers.ofString(body)).build(),
+                java.net.http.HttpResponse.BodyHandlers.ofString());
+        assertThat(answer.statusCode()).as(device + " " + action + ": " + answer.body()).isEqualTo(200);
     }
 
     private static String find(String text, String regex) {
