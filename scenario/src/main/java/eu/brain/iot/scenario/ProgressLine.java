@@ -13,7 +13,7 @@ final class ProgressLine {
 
     static String of(WorldSnapshot start, WorldSnapshot now) {
         return String.format(Locale.ROOT,
-                "[%10s] carts %d/%d delivered | door openings %d | robot in front %d: %d waits ended, %d waiting, "
+                "[%12s] carts %d/%d delivered | door openings %d | robot in front %d: %d waits ended, %d waiting, "
                         + "longest %s | commands %d accepted, %d refused",
                 WarehouseTime.format(Figures.elapsedMs(start, now)), now.cartsInStorage(), now.cartCount(),
                 now.doorOpenings(), now.nearMisses() - start.nearMisses(), now.waitsEnded() - start.waitsEnded(),

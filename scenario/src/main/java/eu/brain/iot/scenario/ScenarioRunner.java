@@ -53,6 +53,7 @@ final class ScenarioRunner {
             java.nio.file.Path configDir = NodeSetup.write(options, sim.baseUri());
             FabricNode node = FabricNode.start(options.root(), configDir, httpPort, options.runDir().resolve("node.log"));
             Thread hook = new Thread(() -> {
+                System.err.println("warehouse-scenario: stopped before the end; stopping the node and robot-sim");
                 node.stop();
                 sim.close();
             }, "scenario-shutdown");
