@@ -29,6 +29,12 @@ import java.util.concurrent.TimeoutException;
  */
 final class FabricNode implements AutoCloseable {
     private static final String PROMPT = "g! ";
+    /**
+     * The node's line saying every bundle of its start levels is up: {@code fabric node: all 48 bundles active in
+     * ... ms} (and, in the node's newer wording, {@code fabric node: levels 1 to 3 up in ... ms ...}).
+     */
+    private static final java.util.regex.Pattern UP = java.util.regex.Pattern.compile(
+            "^fabric node: (all \\d+ bundles active in|.+ up in) \\d+ ms.*");
 
     private final Process process;
     private final Writer stdin;
@@ -86,9 +92,11 @@ final class FabricNode implements AutoCloseable {
                 while (text.startsWith(PROMPT)) {
                     text = text.substring(PROMPT.length());
                 }
-                if (text.startsWith("fabric node: all ")) {
+                if (text.contains("WITH PROBLEMS")) {
+                    ready.complete(text);
+                } else if (UP.matcher(text).matches()) {
                     ready.complete(null);
-                } else if (text.contains("WITH PROBLEMS")) {
+                } else if (text.startsWith("fabric node: check run gave up")) {
                     ready.complete(text);
                 }
                 lines.offer(text); // when full (nobody asked the shell for a while) older output is not needed

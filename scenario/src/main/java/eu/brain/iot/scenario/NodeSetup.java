@@ -67,6 +67,8 @@ final class NodeSetup {
         // the edge's back-off for an unreachable robot, 8 s by default, is wall time: scale it too, so that a robot
         // back from a fault is seen within about 8 s of warehouse time
         edge.put("backoff.max.ms", Math.max(o.pollPeriodMs(), Math.round(8_000 / o.speed())));
+        // where the carts stand (GET /world, 2 s by default), at the same pace in warehouse time
+        edge.put("world.period.ms", Math.max(o.pollPeriodMs(), Math.round(2_000 / o.speed())));
         return edge;
     }
 
