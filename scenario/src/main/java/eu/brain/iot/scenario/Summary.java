@@ -9,6 +9,17 @@ final class Summary {
     private Summary() {
     }
 
+    /** Details longer than this are cut in the terminal (60 carts missing); the report keeps them whole. */
+    static final int DETAIL_CHARS = 600;
+
+    static String shorten(String detail) {
+        if (detail.length() <= DETAIL_CHARS) {
+            return detail;
+        }
+        int cut = detail.lastIndexOf(", ", DETAIL_CHARS);
+        return detail.substring(0, cut > 0 ? cut : DETAIL_CHARS) + ", ... (the whole list is in the report)";
+    }
+
     static void print(PrintStream out, ReportWriter.Run run) {
         WorldSnapshot start = run.start();
         WorldSnapshot end = run.end();
@@ -39,7 +50,7 @@ final class Summary {
                     run.wallMs() <= 0 ? 0.0 : 100.0 * run.nodeCpuMs() / run.wallMs());
         }
         for (Verdict.Check c : run.verdict().checks()) {
-            out.printf("%s  %s: %s%n", c.passed() ? "PASS" : "FAIL", c.name(), c.detail());
+            out.printf("%s  %s: %s%n", c.passed() ? "PASS" : "FAIL", c.name(), shorten(c.detail()));
         }
         out.println(run.verdict().passed() ? "scenario PASSED" : "scenario FAILED: "
                 + run.verdict().failed().size() + " of " + run.verdict().checks().size() + " checks failed");

@@ -53,6 +53,15 @@ class FiguresTest {
     }
 
     @Test
+    void longDetailsAreCutInTheTerminalAtAListSeparator() {
+        String many = String.join(", ", java.util.Collections.nCopies(60, "cart12 at (12,23)"));
+        String cut = Summary.shorten(many);
+        assertThat(cut).endsWith("cart12 at (12,23), ... (the whole list is in the report)");
+        assertThat(cut.length()).isLessThan(Summary.DETAIL_CHARS + 50);
+        assertThat(Summary.shorten("3/3 carts in storage")).isEqualTo("3/3 carts in storage");
+    }
+
+    @Test
     void busStatsAreReadFromTheShellsTable() {
         BusStats s = BusStats.parse(List.of(
                 "EVENT TYPE                                                      PUBLISHED    DELIVERED   FAILED  "
