@@ -93,6 +93,19 @@ class OptionsParserTest {
     }
 
     @Test
+    void aMapThatDoesNotParseIsABadOptionNamingThePlace(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path map = dir.resolve("bad.map");
+        java.nio.file.Files.writeString(map, "map:\n#####\n#RxC#\n#####\n");
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--map", map.toString(), "--run-dir", dir.resolve("run").toString()},
+                new PrintStream(new ByteArrayOutputStream()), new PrintStream(err));
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("warehouse-scenario: --map: ")
+                .contains("bad.map:3:3: unknown cell 'x'");
+        assertThat(dir.resolve("run")).as("nothing started").doesNotExist();
+    }
+
+    @Test
     void helpPrintsTheUsageAndExitsWith0() {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         assertThat(Main.run(new String[] {"--help"}, new PrintStream(out), System.err)).isZero();
