@@ -55,7 +55,7 @@ class ScenarioProcessTest {
         assertThat(report.path("figures").path("nodeCpuSeconds").asDouble()).isPositive();
         assertThat(report.path("figures").has("busEventsPerSecond")).isTrue();
         assertThat(report.path("faults")).hasSize(2);
-        assertThat(Files.readString(run.resolve("node.log"))).contains("fabric node: all ");
+        assertThat(Files.readString(run.resolve("node.log"))).contains("fabric node ready in ");
         assertThat(Files.readString(run.resolve("node-config/eu.brain.iot.edge.cfg")))
                 .contains("poll.period.ms=25", "fleet.url=http://127.0.0.1:");
         assertThat(run.resolve("node-config/eu.brain.iot.bis.cfg")).as("no repository: no installer").doesNotExist();
