@@ -61,8 +61,16 @@ final class ScenarioRunner {
             try {
                 out.printf("node: pid %d, REST API http://127.0.0.1:%d/sensinact, config %s, log %s%n", node.pid(),
                         httpPort, configDir, node.log());
+                WorldSnapshot start;
+                long startNanos;
+                Duration cpu0;
                 try {
                     node.awaitReady(NODE_READY_TIMEOUT);
+                    // the run starts when the node is up: its edge polls from then on, and behaviours may act at
+                    // once, before its REST API answers
+                    start = new WorldSnapshot(sim.worldDocument());
+                    startNanos = System.nanoTime();
+                    cpu0 = node.cpu();
                     List<String> devices = new ArrayList<>(sim.robotIds());
                     devices.addAll(sim.doorIds());
                     new EdgeProbe(httpPort).awaitDevices(devices, EDGE_TIMEOUT);
@@ -70,7 +78,7 @@ final class ScenarioRunner {
                     out.println("scenario: the node did not start: " + e.getMessage());
                     return 1;
                 }
-                return observe(sim, node, System.nanoTime() - wall0);
+                return observe(sim, node, new Start(start, startNanos, startNanos - wall0, cpu0));
             } finally {
                 node.stop();
                 try {
@@ -93,12 +101,24 @@ final class ScenarioRunner {
         }
     }
 
-    private int observe(RobotSim sim, FabricNode node, long nodeStartNanos) throws IOException, InterruptedException {
-        WorldSnapshot start = new WorldSnapshot(sim.worldDocument());
-        long wall0 = System.nanoTime();
-        Duration cpu0 = node.cpu();
-        out.printf("node ready and its edge sees the fleet after %.1f s; the scenario starts at robot-sim step %d (wait limit %s, deadline %s of "
-                        + "warehouse time)%n", nodeStartNanos / 1e9, start.step(),
+    /**
+     * The run's start: when the node was up.
+     *
+     * @param world          robot-sim's world then
+     * @param nanos          {@link System#nanoTime()} then
+     * @param nodeStartNanos from the runner's start until then
+     * @param nodeCpu        the node's CPU time then
+     */
+    private record Start(WorldSnapshot world, long nanos, long nodeStartNanos, Duration nodeCpu) {
+    }
+
+    private int observe(RobotSim sim, FabricNode node, Start begin) throws IOException, InterruptedException {
+        WorldSnapshot start = begin.world();
+        long wall0 = begin.nanos();
+        long nodeStartNanos = begin.nodeStartNanos();
+        Duration cpu0 = begin.nodeCpu();
+        out.printf("node up after %.1f s (the run starts at robot-sim step %d), its edge sees the fleet; wait limit "
+                        + "%s, deadline %s of warehouse time%n", nodeStartNanos / 1e9, start.step(),
                 WarehouseTime.format(options.waitLimitMs()), WarehouseTime.format(options.deadlineMs()));
         FaultInjector faults = new FaultInjector(sim, node, options.faults());
         WorldSnapshot now = start;

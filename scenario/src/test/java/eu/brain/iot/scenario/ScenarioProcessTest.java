@@ -37,7 +37,7 @@ class ScenarioProcessTest {
         String text = out.toString(StandardCharsets.UTF_8);
         assertThat(err.toString(StandardCharsets.UTF_8)).as(text).isEmpty();
         assertThat(code).as(text).isEqualTo(1);
-        assertThat(text).contains("node ready and its edge sees the fleet after ")
+        assertThat(text).contains("its edge sees the fleet; wait limit 10.0 s")
                 .containsPattern("\\[ +\\d+\\.\\d s\\] carts 0/3 delivered \\| door openings 0 \\|")
                 .contains("fault: robot2 goes offline", "fault: robot2 is back online")
                 .contains("FAIL  REQ-1 every cart lifted and carried to storage: 0/3 carts in storage; not delivered: "
@@ -50,7 +50,7 @@ class ScenarioProcessTest {
         JsonNode report = ReportWriter.MAPPER.readTree(run.resolve("report.json").toFile());
         assertThat(report.path("passed").asBoolean(true)).isFalse();
         assertThat(report.path("warehouse").path("robots").asInt()).isEqualTo(3);
-        assertThat(report.path("figures").path("warehouseSeconds").asDouble()).isBetween(6.0, 8.0);
+        assertThat(report.path("figures").path("warehouseSeconds").asDouble()).as("the deadline").isGreaterThanOrEqualTo(6.0);
         assertThat(report.path("figures").path("warehouseSecondsUntilAllDelivered").isNull()).isTrue();
         assertThat(report.path("figures").path("nodeCpuSeconds").asDouble()).isPositive();
         assertThat(report.path("figures").has("busEventsPerSecond")).isTrue();
@@ -80,9 +80,9 @@ class ScenarioProcessTest {
                 () -> Main.run(new String[] {"--root", ROOT.toString(), "--no-behaviours", "--deadline", "10",
                         "--speed", "20", "--run-dir", run.toString()}, print, print));
         org.awaitility.Awaitility.await("the run's start").atMost(java.time.Duration.ofSeconds(150))
-                .until(() -> out.toString(StandardCharsets.UTF_8).contains("the scenario starts") || code.isDone());
+                .until(() -> out.toString(StandardCharsets.UTF_8).contains("its edge sees the fleet") || code.isDone());
         String started = out.toString(StandardCharsets.UTF_8);
-        assertThat(started).contains("the scenario starts");
+        assertThat(started).contains("its edge sees the fleet");
         URI edge = URI.create(find(started, "REST API (http://127\\.0\\.0\\.1:\\d+/sensinact)") + "/providers/");
         act(edge, "door1", "open", "{}");
         int[][] carts = {{3, 7}, {10, 7}, {16, 7}};
