@@ -1,9 +1,13 @@
 package eu.brain.iot.robotsim;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import eu.brain.iot.robotsim.fault.FaultTable;
+import eu.brain.iot.robotsim.http.CommandCounter;
 import eu.brain.iot.robotsim.http.HttpServer;
 import eu.brain.iot.robotsim.view.DoorView;
+import eu.brain.iot.robotsim.view.Json;
 import eu.brain.iot.robotsim.view.RobotView;
+import eu.brain.iot.robotsim.view.WorldDocument;
 import eu.brain.iot.robotsim.world.Placement;
 import eu.brain.iot.robotsim.world.World;
 import eu.brain.iot.robotsim.world.WarehouseMap;
@@ -36,9 +40,11 @@ public final class RobotSim implements AutoCloseable {
     private final HttpServer server;
     private final Map<String, Integer> robots;
     private final Map<String, Integer> doors;
+    private final CommandCounter commands;
 
     private RobotSim(SimConfig config, FaultTable faults, WorldThread world, HttpServer server,
-                     Map<String, Integer> robots, Map<String, Integer> doors) {
+                     Map<String, Integer> robots, Map<String, Integer> doors, CommandCounter commands) {
+        this.commands = commands;
         this.config = config;
         this.faults = faults;
         this.world = world;
@@ -78,12 +84,13 @@ public final class RobotSim implements AutoCloseable {
         index.put("manualStep", config.manualStep());
         index.put("robots", List.copyOf(robots.keySet()));
         index.put("doors", List.copyOf(doors.keySet()));
+        CommandCounter commands = new CommandCounter();
         HttpServer server;
         try {
             server = HttpServer.start(config.bindAddress(), config.port(), config.ioThreads(),
                     new HttpServer.Limits(config.allowedHosts(), config.requestTimeoutMillis()),
                     new HttpServer.Wiring(worldThread, worldThread.views(), faults, robots, doors,
-                            List.copyOf(robots.keySet()), index));
+                            List.copyOf(robots.keySet()), index, config.stepMillis(), commands));
         } catch (IOException | RuntimeException e) {
             worldThread.close();
             throw e;
@@ -91,7 +98,7 @@ public final class RobotSim implements AutoCloseable {
         if (!config.manualStep()) {
             worldThread.startClock(config.stepPeriodNanos());
         }
-        return new RobotSim(config, faults, worldThread, server, robots, doors);
+        return new RobotSim(config, faults, worldThread, server, robots, doors, commands);
     }
 
     private static Map<String, Integer> indexOf(List<Placement> placements) {
@@ -167,6 +174,18 @@ public final class RobotSim implements AutoCloseable {
      */
     public <T> T inspect(Function<World, T> look) {
         return await(world.call(a -> look.apply(a.world())));
+    }
+
+    /** What {@code GET /world/counters} answers now (waits, deadlocks, door openings, carts in storage). */
+    public JsonNode counters() {
+        return inspect(w -> Json.MAPPER.valueToTree(
+                WorldDocument.counters(w, config.stepMillis(), commands.snapshot())));
+    }
+
+    /** What {@code GET /world} answers now: map, robots, carts, doors and counters. */
+    public JsonNode worldDocument() {
+        return inspect(w -> Json.MAPPER.valueToTree(
+                WorldDocument.world(w, config.stepMillis(), commands.snapshot())));
     }
 
     private static <T> T await(java.util.concurrent.CompletableFuture<T> f) {

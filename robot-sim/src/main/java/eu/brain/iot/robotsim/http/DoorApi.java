@@ -13,10 +13,12 @@ final class DoorApi {
 
     private final WorldThread world;
     private final ViewPublisher views;
+    private final CommandCounter commands;
 
-    DoorApi(WorldThread world, ViewPublisher views) {
+    DoorApi(WorldThread world, ViewPublisher views, CommandCounter commands) {
         this.world = world;
         this.views = views;
+        this.commands = commands;
     }
 
     /** @param rest the path segments after {@code door_controller} */
@@ -32,6 +34,9 @@ final class DoorApi {
                 }
             }
             case "command" -> {
+                if (ex.method().equals(HttpMethod.POST)) {
+                    ex.countAsCommand(commands);
+                }
                 if (Route.methodIs(ex, HttpMethod.POST)) {
                     command(ex, door);
                 }

@@ -40,7 +40,8 @@ public final class HttpServer implements AutoCloseable {
 
     /** What the server serves; ids map to indices of the world's robots and doors. */
     public record Wiring(WorldThread world, ViewPublisher views, FaultTable faults, Map<String, Integer> robots,
-                         Map<String, Integer> doors, List<String> robotIds, Map<String, Object> index) {
+                         Map<String, Integer> doors, List<String> robotIds, Map<String, Object> index,
+                         long stepMillis, CommandCounter commands) {
     }
 
     /**
@@ -68,9 +69,9 @@ public final class HttpServer implements AutoCloseable {
     public static HttpServer start(String bindAddress, int port, int ioThreads, Limits limits, Wiring w)
             throws IOException {
         ToIntFunction<String> robotIndex = id -> w.robots().getOrDefault(id, -1);
-        Router router = new Router(w.robots(), w.doors(), new RobotApi(w.world(), w.views(), w.faults()),
-                new DoorApi(w.world(), w.views()), new AdminApi(w.world(), w.faults(), w.robotIds(), robotIndex),
-                new WorldApi(w.world(), w.index()));
+        Router router = new Router(w.robots(), w.doors(), new RobotApi(w.world(), w.views(), w.faults(), w.commands()),
+                new DoorApi(w.world(), w.views(), w.commands()), new AdminApi(w.world(), w.faults(), w.robotIds(), robotIndex),
+                new WorldApi(w.world(), w.index(), w.stepMillis(), w.commands()));
         Set<String> hosts = new HashSet<>(limits.allowedHosts());
         hosts.addAll(List.of("127.0.0.1", "localhost", "[::1]", SimConfig.hostName(bindAddress)));
         RequestGate gate = new RequestGate(hosts);

@@ -27,15 +27,29 @@ final class RobotApi {
     private final WorldThread world;
     private final ViewPublisher views;
     private final FaultTable faults;
+    private final CommandCounter commands;
 
-    RobotApi(WorldThread world, ViewPublisher views, FaultTable faults) {
+    RobotApi(WorldThread world, ViewPublisher views, FaultTable faults, CommandCounter commands) {
         this.world = world;
         this.views = views;
         this.faults = faults;
+        this.commands = commands;
+    }
+
+    /** A mission order: POST .../{component}/add or .../cancel (what the fleet counts as commands). */
+    private static boolean isCommand(ServerExchange ex, List<String> rest) {
+        if (!ex.method().equals(HttpMethod.POST) || rest.isEmpty()) {
+            return false;
+        }
+        String last = rest.get(rest.size() - 1);
+        return last.equals("add") || last.equals("cancel");
     }
 
     /** @param rest the path segments after {@code robot_local_control} */
     void handle(ServerExchange ex, int robot, String id, List<String> rest) {
+        if (isCommand(ex, rest)) {
+            ex.countAsCommand(commands);
+        }
         FaultSettings f = faults.effective(robot);
         ex.delay(f.latencyMs());
         FaultAction action = faults.next(robot, f);

@@ -33,6 +33,7 @@ final class ServerExchange {
     private final HttpVersion version;
     private int delayMs;
     private boolean malformed;
+    private CommandCounter commands;
 
     ServerExchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
              boolean keepAlive, HttpVersion version) {
@@ -55,6 +56,11 @@ final class ServerExchange {
 
     byte[] body() {
         return body;
+    }
+
+    /** This exchange is a command: its answer (or its drop) is counted. */
+    void countAsCommand(CommandCounter counter) {
+        commands = counter;
     }
 
     /** Delays the answer (fault: latency). */
@@ -89,10 +95,16 @@ final class ServerExchange {
 
     /** Closes the connection without an answer (fault: dropped connection). */
     void drop() {
+        if (commands != null) {
+            commands.record(0);
+        }
         onEventLoop(delayMs, connection::drop);
     }
 
     private void send(int status, byte[] json, String allow) {
+        if (commands != null) {
+            commands.record(status);
+        }
         byte[] content = malformed ? truncate(json) : json;
         boolean head = method.equals(HttpMethod.HEAD);
         FullHttpResponse response = new DefaultFullHttpResponse(version, HttpResponseStatus.valueOf(status),

@@ -11,10 +11,14 @@ import java.util.Map;
 final class WorldApi {
     private final WorldThread world;
     private final byte[] index;
+    private final long stepMillis;
+    private final CommandCounter commands;
 
-    WorldApi(WorldThread world, Map<String, Object> index) {
+    WorldApi(WorldThread world, Map<String, Object> index, long stepMillis, CommandCounter commands) {
+        this.commands = commands;
         this.world = world;
         this.index = Json.bytes(index);
+        this.stepMillis = stepMillis;
     }
 
     void index(ServerExchange ex) {
@@ -27,11 +31,11 @@ final class WorldApi {
     void handle(ServerExchange ex, List<String> rest) {
         if (rest.isEmpty()) {
             if (Route.methodIs(ex, HttpMethod.GET)) {
-                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.world(a.world()))));
+                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.world(a.world(), stepMillis, commands.snapshot()))));
             }
         } else if (rest.size() == 1 && rest.get(0).equals("counters")) {
             if (Route.methodIs(ex, HttpMethod.GET)) {
-                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.counters(a.world()))));
+                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.counters(a.world(), stepMillis, commands.snapshot()))));
             }
         } else {
             Route.notFound(ex);

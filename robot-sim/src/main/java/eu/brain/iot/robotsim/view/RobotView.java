@@ -13,17 +13,21 @@ import eu.brain.iot.robotsim.world.World;
  * @param detect    0 nothing in front, 1 a robot, 2 a door that is not open
  * @param cart      id of the carried cart, or null
  * @param mission   the running mission, else the next queued, else the last ended; null before the first order
+ * @param waitSteps        steps spent stopped behind another robot, all waits together
+ * @param longestWaitSteps the longest single wait behind another robot, in steps
  */
 @JsonPropertyOrder({"id", "x", "y", "heading", "area", "state", "detect", "cart", "mission", "nearMisses",
-        "deadlocks"})
+        "deadlocks", "waitSteps", "longestWaitSteps"})
 public record RobotView(String id, int x, int y, String heading, int area, String state, int detect, String cart,
-                        MissionView mission, long nearMisses, long deadlocks) {
+                        MissionView mission, long nearMisses, long deadlocks, long waitSteps,
+                        long longestWaitSteps) {
 
     public static RobotView of(World world, Robot r) {
         return new RobotView(r.id(), r.x(), r.y(), r.heading().name(),
                 world.map().terrain(r.x(), r.y()).area(),
                 r.running() ? "running" : "stopped", r.detect(),
                 r.carried() >= 0 ? world.cart(r.carried()).id() : null,
-                MissionView.of(r.shownMission()), r.nearMisses(), r.deadlocks());
+                MissionView.of(r.shownMission()), r.nearMisses(), r.deadlocks(),
+                r.waitSteps(), r.longestWaitSteps());
     }
 }

@@ -9,6 +9,7 @@ public final class Door {
     private final int openSteps;
     private DoorState state = DoorState.CLOSED;
     private int stepsLeft;
+    private long openings;
 
     Door(int index, String id, int x, int y, int openSteps) {
         this.index = index;
@@ -43,6 +44,11 @@ public final class Door {
         return stepsLeft;
     }
 
+    /** Times the door began to open: closed to opening (or open at once), or closing back to open. */
+    public long openings() {
+        return openings;
+    }
+
     public boolean passable() {
         return state == DoorState.OPEN;
     }
@@ -53,8 +59,12 @@ public final class Door {
             case CLOSED -> {
                 stepsLeft = openSteps;
                 state = openSteps == 0 ? DoorState.OPEN : DoorState.OPENING;
+                openings++;
             }
-            case CLOSING -> state = DoorState.OPEN;
+            case CLOSING -> {
+                state = DoorState.OPEN;
+                openings++;
+            }
             default -> {
                 // already open or opening
             }

@@ -39,7 +39,19 @@ public final class Robot {
     boolean deadlockCounted;
     long nearMisses;
     long deadlocks;
+    /** Steps spent stopped behind another robot ({@code detect} 1), all waits together. */
+    long waitSteps;
+    /** Length in steps of the wait going on now, 0 when not waiting behind a robot. */
+    long waitingSteps;
+    /** The longest single wait behind another robot, in steps (the one going on now included). */
+    long longestWaitSteps;
+    /** Waits behind another robot that have ended (the robot moved on, got new orders or went offline). */
+    long waitsEnded;
     boolean offline;
+    /** Missions that ended: finished, failed (a precondition or no path), cancelled. */
+    long missionsFinished;
+    long missionsFailed;
+    long missionsCancelled;
 
     Robot(int index, String id, int x, int y) {
         this.index = index;
@@ -89,6 +101,39 @@ public final class Robot {
         return deadlocks;
     }
 
+    /** Steps spent stopped behind another robot, all waits together. */
+    public long waitSteps() {
+        return waitSteps;
+    }
+
+    /** Length in steps of the wait behind another robot going on now, 0 when none. */
+    public long waitingSteps() {
+        return waitingSteps;
+    }
+
+    /** The longest single wait behind another robot so far, in steps. */
+    public long longestWaitSteps() {
+        return longestWaitSteps;
+    }
+
+    /** Waits behind another robot that have ended. */
+    public long waitsEnded() {
+        return waitsEnded;
+    }
+
+    public long missionsFinished() {
+        return missionsFinished;
+    }
+
+    /** Missions that failed by themselves (a precondition that did not hold when they started, no path). */
+    public long missionsFailed() {
+        return missionsFailed;
+    }
+
+    public long missionsCancelled() {
+        return missionsCancelled;
+    }
+
     public boolean offline() {
         return offline;
     }
@@ -134,6 +179,13 @@ public final class Robot {
     }
 
     void remember(Mission ended) {
+        if (ended.state() == MissionState.FINISHED) {
+            missionsFinished++;
+        } else if ("cancelled".equals(ended.reason())) {
+            missionsCancelled++;
+        } else {
+            missionsFailed++;
+        }
         history.addFirst(ended);
         if (history.size() > HISTORY) {
             history.removeLast();

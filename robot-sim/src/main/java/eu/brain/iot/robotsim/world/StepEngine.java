@@ -13,7 +13,8 @@ import java.util.function.IntPredicate;
  *   <li>when several robots want the same free cell, the one with the lowest seeded priority for this step wins,
  *       the others stop with {@code detect} 1;</li>
  *   <li>winners move one cell (a carried cart moves along);</li>
- *   <li>near misses (a robot newly stopped by another robot) and deadlocks are counted.</li>
+ *   <li>near misses (a robot newly stopped by another robot), waits behind another robot (steps, longest, ended)
+ *       and deadlocks are counted.</li>
  * </ol>
  * So two robots never share a cell: a robot only enters a cell that was empty at the start of the step and that no
  * other robot entered. Owned by the world's owner thread.
@@ -60,10 +61,24 @@ public final class StepEngine {
                 w.nearMisses++;
             }
             r.wasBlockedByRobot = blocked;
+            countWait(r, blocked);
             // between two queued missions a robot is still at work: "running" unless its sensor holds it
             r.running = (r.current != null || !r.queue.isEmpty()) && r.detect == 0 && !r.offline;
         }
         deadlocks.afterStep(w);
+    }
+
+    /** A wait behind another robot lasts as long as the robot's front sensor sees one (detect 1) step after step. */
+    private void countWait(Robot r, boolean blocked) {
+        if (blocked) {
+            r.waitSteps++;
+            r.waitingSteps++;
+            r.longestWaitSteps = Math.max(r.longestWaitSteps, r.waitingSteps);
+        } else if (r.waitingSteps > 0) {
+            world.endedWaits.merge(r.waitingSteps, 1L, Long::sum);
+            r.waitsEnded++;
+            r.waitingSteps = 0;
+        }
     }
 
     private void decide(Robot r) {

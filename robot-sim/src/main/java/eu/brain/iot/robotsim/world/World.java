@@ -30,6 +30,8 @@ public final class World {
     long nextMissionId = 1;
     long nearMisses;
     long deadlocks;
+    /** Waits behind another robot that have ended: length in steps to how many. */
+    final java.util.TreeMap<Long, Long> endedWaits = new java.util.TreeMap<>();
 
     public World(WarehouseMap map, SimRules rules) {
         this.map = map;
@@ -135,6 +137,11 @@ public final class World {
     /** Stops caused by another robot, all robots together. */
     public long nearMisses() {
         return nearMisses;
+    }
+
+    /** Waits behind another robot that have ended, by length in steps (ascending) to how many; a copy. */
+    public java.util.SortedMap<Long, Long> endedWaits() {
+        return new java.util.TreeMap<>(endedWaits);
     }
 
     /** Deadlocks (cycles of robots waiting on each other for deadlockSteps steps), all robots together. */

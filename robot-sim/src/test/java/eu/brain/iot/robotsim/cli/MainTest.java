@@ -127,6 +127,11 @@ class MainTest {
         WarehouseMap map = MapParser.parse(file);
         assertThat(map.robots()).hasSize(40);
         assertThat(map.carts()).hasSize(80);
+        assertThat(map.doors()).as("width/40: one door, every trip crosses it").hasSize(1);
+        Path two = dir.resolve("two.map");
+        assertThat(run("generate", "--width", "60", "--height", "30", "--robots", "30", "--carts", "60",
+                "--doors", "2", "--out", two.toString())).isZero();
+        assertThat(MapParser.parse(two).doors()).hasSize(2);
         assertThat(run("generate", "--width", "20", "--height", "20", "--robots", "5", "--carts", "5000")).isEqualTo(2);
         assertThat(err()).contains("carts do not fit");
     }

@@ -31,14 +31,21 @@ class BadInputTest {
             RobotSim fresh = RobotSim.start(SimConfig.builder().manualStep(true).build());
             try {
                 fresh.step(5);
-                assertThat(client.get("world").body()).as("the world after 5 more steps")
-                        .isEqualTo(new Client(fresh.baseUri()).get("world").body());
+                assertThat(withoutCommandCounts(client.get("world").json())).as("the world after 5 more steps")
+                        .isEqualTo(withoutCommandCounts(new Client(fresh.baseUri()).get("world").json()));
             } finally {
                 fresh.close();
             }
         } finally {
             sim.close();
         }
+    }
+
+    /** The world without the count of commands answered, which a refused command raises (and only that). */
+    private static String withoutCommandCounts(com.fasterxml.jackson.databind.JsonNode world) {
+        com.fasterxml.jackson.databind.node.ObjectNode copy = world.deepCopy();
+        ((com.fasterxml.jackson.databind.node.ObjectNode) copy.get("counters")).remove("commands");
+        return copy.toString();
     }
 
     @ParameterizedTest(name = "{0} -> 400 naming {1}")

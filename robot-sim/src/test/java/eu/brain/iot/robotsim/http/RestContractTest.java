@@ -39,7 +39,8 @@ class RestContractTest {
         Client.Answer a = client.get("robot1/robot_local_control/state");
         assertThat(a.status()).isEqualTo(200);
         assertThat(a.body()).isEqualTo("{\"id\":\"robot1\",\"x\":2,\"y\":1,\"heading\":\"N\",\"area\":1,"
-                + "\"state\":\"stopped\",\"detect\":0,\"cart\":null,\"mission\":null,\"nearMisses\":0,\"deadlocks\":0}");
+                + "\"state\":\"stopped\",\"detect\":0,\"cart\":null,\"mission\":null,\"nearMisses\":0,\"deadlocks\":0,"
+                + "\"waitSteps\":0,\"longestWaitSteps\":0}");
     }
 
     @Test
@@ -180,6 +181,72 @@ class RestContractTest {
         assertThat(counters.get("nearMisses").asLong()).isEqualTo(1);
         assertThat(counters.get("perRobot").get("robot1").get("nearMisses").asLong()).isEqualTo(1);
         assertThat(client.get("robot1/robot_local_control/state").json().get("detect").asInt()).isEqualTo(1);
+    }
+
+    @Test
+    void countersGiveWaitsDoorOpeningsAndCartsInStorage() throws Exception {
+        JsonNode c = client.get("world/counters").json();
+        assertThat(c.get("stepMillis").asLong()).isEqualTo(500);
+        assertThat(c.get("carts").asLong()).isEqualTo(3);
+        assertThat(c.get("cartsInStorage").asLong()).isZero();
+        assertThat(c.get("doorOpenings").asLong()).isZero();
+
+        client.post("robot1/robot_local_control/NavigationComponent/GoToComponent/add", "{\"x\":9,\"y\":1}");
+        sim.step(5);
+        c = client.get("world/counters").json();
+        JsonNode r1 = c.get("perRobot").get("robot1");
+        assertThat(r1.get("waitSteps").asLong()).isEqualTo(4);
+        assertThat(r1.get("waitingSteps").asLong()).isEqualTo(4);
+        assertThat(r1.get("longestWaitSteps").asLong()).isEqualTo(4);
+        assertThat(r1.get("longestWaitMs").asLong()).isEqualTo(2000);
+        assertThat(c.get("longestWaitMs").asLong()).isEqualTo(2000);
+        assertThat(c.get("waitingNow").asLong()).isEqualTo(1);
+        JsonNode state = client.get("robot1/robot_local_control/state").json();
+        assertThat(state.get("waitSteps").asLong()).isEqualTo(4);
+        assertThat(state.get("longestWaitSteps").asLong()).isEqualTo(4);
+
+        client.post("robot1/robot_local_control/NavigationComponent/GoToComponent/cancel", "{}");
+        sim.step(1);
+        c = client.get("world/counters").json();
+        assertThat(c.get("waitingNow").asLong()).isZero();
+        assertThat(c.get("waitsEnded").asLong()).isEqualTo(1);
+        assertThat(c.get("endedWaits").get("4").asLong()).isEqualTo(1);
+
+        // carry cart1 (3,7) through the door to the storage cell (12,1): REQ-1 for one cart
+        client.post("door1/door_controller/command", "{\"data\":1.0}");
+        String r3 = R3 + "NavigationComponent/";
+        client.post(r3 + "GoToComponent/add", "{\"x\":3,\"y\":7}");
+        client.post(r3 + "PickComponent/add", "{}");
+        client.post(r3 + "GoToComponent/add", "{\"x\":12,\"y\":1}");
+        client.post(r3 + "PlaceComponent/add", "{}");
+        sim.step(60);
+        c = client.get("world/counters").json();
+        assertThat(c.get("cartsInStorage").asLong()).isEqualTo(1);
+        assertThat(c.get("doorOpenings").asLong()).isEqualTo(1);
+        assertThat(c.get("perDoor").get("door1").get("openings").asLong()).isEqualTo(1);
+        JsonNode commands = c.get("commands");
+        assertThat(commands.get("accepted").asLong()).as("3 go-tos, a pick, a place, a cancel, a door").isEqualTo(7);
+        assertThat(commands.get("refused").asLong()).isZero();
+        client.post("robot2/robot_local_control/NavigationComponent/GoToComponent/add", "{\"x\":0,\"y\":0}");
+        client.post("robot2/robot_local_control/NavigationComponent/PlaceComponent/add", "{}");
+        client.get("robot2/robot_local_control/NavigationComponent/PlaceComponent/query_state");
+        sim.faults().setOwn(1, new eu.brain.iot.robotsim.fault.FaultSettings(0, 0, 0, 0, true));
+        client.post("robot2/robot_local_control/NavigationComponent/GoToComponent/add", "{\"x\":2,\"y\":3}");
+        commands = client.get("world/counters").json().get("commands");
+        assertThat(commands.get("received").asLong()).as("a query is no command").isEqualTo(10);
+        assertThat(commands.get("refused").asLong()).as("a place is checked when it starts, not when added")
+                .isEqualTo(2);
+        assertThat(commands.get("refusedByStatus").get("422").asLong()).as("a goal in a wall").isEqualTo(1);
+        assertThat(commands.get("refusedByStatus").get("503").asLong()).as("offline").isEqualTo(1);
+        sim.faults().setOwn(1, null);
+        sim.step(2);
+        JsonNode missions = client.get("world/counters").json().get("missions");
+        assertThat(missions.get("finished").asLong()).as("robot3's four missions").isEqualTo(4);
+        assertThat(missions.get("cancelled").asLong()).as("robot1's go-to").isEqualTo(1);
+        assertThat(missions.get("failed").asLong()).as("robot2's place without a cart").isEqualTo(1);
+        c = client.get("world/counters").json();
+        assertThat(sim.counters().toString()).as("the Java API answers the same").isEqualTo(c.toString());
+        assertThat(sim.worldDocument().get("counters").toString()).isEqualTo(c.toString());
     }
 
     @Test

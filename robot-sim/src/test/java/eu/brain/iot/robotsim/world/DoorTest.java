@@ -42,6 +42,33 @@ class DoorTest {
         sim.step(1);
         assertThat(door.state()).isEqualTo(DoorState.CLOSED);
         assertThat(r.nearMisses()).as("a door is no near miss").isZero();
+        assertThat(r.waitSteps()).as("nor a wait behind a robot").isZero();
+    }
+
+    @Test
+    void openingsCountEveryStartOfOpeningAndNothingElse() {
+        Sim sim = Sim.of(MAP);
+        Door door = sim.world.door(0);
+        sim.commands.door(0, true);
+        sim.commands.door(0, true);
+        assertThat(door.openings()).as("an opening door asked again").isEqualTo(1);
+        sim.step(2);
+        sim.commands.door(0, true);
+        assertThat(door.openings()).as("an open door asked again").isEqualTo(1);
+        sim.commands.door(0, false);
+        sim.commands.door(0, false);
+        assertThat(door.openings()).isEqualTo(1);
+        sim.commands.door(0, true);
+        assertThat(door.openings()).isEqualTo(2);
+
+        sim.goTo("robot1", 2, 3);
+        sim.step(2);
+        assertThat(sim.robot("robot1").y()).isEqualTo(2);
+        sim.commands.door(0, false);
+        assertThat(door.state()).isEqualTo(DoorState.CLOSING);
+        sim.commands.door(0, true);
+        assertThat(door.state()).isEqualTo(DoorState.OPEN);
+        assertThat(door.openings()).as("closing turned back to open").isEqualTo(3);
     }
 
     @Test

@@ -19,6 +19,16 @@ class MapGeneratorTest {
     }
 
     @Test
+    void theScenariosLargerWarehouseHasOneDoorSoEveryTripCrossesIt() {
+        WarehouseMap map = MapGenerator.generate(60, 30, 30, 60, 1, 1);
+        assertThat(map.robots()).hasSize(30);
+        assertThat(map.carts()).hasSize(60);
+        assertThat(map.doors()).hasSize(1);
+        long openings = map.terrainRows().stream().filter(r -> r.matches("#+D#+")).count();
+        assertThat(openings).as("the unload area is reached only through the door's wall row").isEqualTo(1);
+    }
+
+    @Test
     void tenThousandRobotsFit() {
         WarehouseMap map = MapGenerator.generate(400, 150, 10_000, 2000, 10, 1);
         assertThat(map.robots()).hasSize(10_000);

@@ -40,6 +40,64 @@ class SensorTest {
     }
 
     @Test
+    void waitsBehindAnotherRobotAreCountedInStepsWithTheLongestAndTheEndedOnes() {
+        Sim sim = Sim.of("map:\n########\n#RddddR#\n######d#\n########\n");
+        Robot r1 = sim.robot("robot1");
+        Robot r2 = sim.robot("robot2");
+        sim.goTo("robot1", 6, 1);
+        sim.step(4);
+        assertThat(r1.waitSteps()).as("moving is no wait").isZero();
+        sim.step(3);
+        assertThat(r1.detect()).isEqualTo(1);
+        assertThat(r1.waitSteps()).isEqualTo(3);
+        assertThat(r1.waitingSteps()).isEqualTo(3);
+        assertThat(r1.longestWaitSteps()).isEqualTo(3);
+        assertThat(r1.waitsEnded()).isZero();
+        assertThat(sim.world.endedWaits()).isEmpty();
+
+        sim.goTo("robot2", 6, 2);
+        sim.step(1);
+        assertThat(r1.waitingSteps()).as("still sees the robot that is just leaving").isEqualTo(4);
+        sim.step(1);
+        assertThat(r1.x()).isEqualTo(6);
+        assertThat(r1.waitingSteps()).isZero();
+        assertThat(r1.waitSteps()).isEqualTo(4);
+        assertThat(r1.longestWaitSteps()).isEqualTo(4);
+        assertThat(r1.waitsEnded()).isEqualTo(1);
+        assertThat(sim.world.endedWaits()).containsExactly(java.util.Map.entry(4L, 1L));
+        assertThat(r2.waitSteps()).isZero();
+
+        sim.goTo("robot1", 5, 1);
+        sim.step(1);
+        sim.goTo("robot2", 4, 1);
+        sim.step(2);
+        assertThat(r2.waitingSteps()).as("robot1 stands at (5,1)").isEqualTo(1);
+        sim.goTo("robot1", 1, 1);
+        sim.step(1);
+        assertThat(r2.waitingSteps()).as("robot1 left (5,1) in this step").isEqualTo(2);
+        sim.step(1);
+        assertThat(r2.x()).isEqualTo(5);
+        assertThat(r2.waitsEnded()).isEqualTo(1);
+        assertThat(r2.longestWaitSteps()).isEqualTo(2);
+        assertThat(r1.longestWaitSteps()).as("robot1's own longest wait stays").isEqualTo(4);
+        assertThat(sim.world.endedWaits()).containsExactly(java.util.Map.entry(2L, 1L), java.util.Map.entry(4L, 1L));
+    }
+
+    @Test
+    void aDoorOrAnIdleRobotIsNoWaitAndGoingOfflineEndsOne() {
+        Sim sim = Sim.of("map:\n######\n#RddR#\n######\n");
+        Robot r1 = sim.robot("robot1");
+        sim.goTo("robot1", 4, 1);
+        sim.step(5);
+        assertThat(r1.waitingSteps()).isEqualTo(3);
+        sim.offline[0] = true;
+        sim.step(1);
+        assertThat(r1.waitingSteps()).isZero();
+        assertThat(r1.waitsEnded()).isEqualTo(1);
+        assertThat(sim.robot("robot2").waitSteps()).as("an idle robot waits for nothing").isZero();
+    }
+
+    @Test
     void twoRobotsWantingTheSameCellNeverShareItAndTheSeedPicksTheWinner() {
         Set<String> winners = new HashSet<>();
         for (long seed = 1; seed <= 20; seed++) {

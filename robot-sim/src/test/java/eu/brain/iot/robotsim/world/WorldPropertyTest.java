@@ -60,7 +60,7 @@ class WorldPropertyTest {
             sim.step(1);
         }
         return new String(eu.brain.iot.robotsim.view.Json.bytes(
-                eu.brain.iot.robotsim.view.WorldDocument.world(sim.world)), java.nio.charset.StandardCharsets.UTF_8);
+                eu.brain.iot.robotsim.view.WorldDocument.world(sim.world, 500, eu.brain.iot.robotsim.view.CommandCounts.NONE)), java.nio.charset.StandardCharsets.UTF_8);
     }
 
     private static void randomCommands(Sim sim, Random random) throws CommandRejectedException {

@@ -1,0 +1,121 @@
+package eu.brain.iot.scenario;
+
+import eu.brain.iot.robotsim.RobotSim;
+import eu.brain.iot.robotsim.fault.FaultSettings;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.List;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+/**
+ * Injects the planned faults when their warehouse time comes: a robot offline (and back) through robot-sim's fault
+ * API; a behaviour bundle stopped through the node's Gogo shell, as an operator would ({@code lb -s}, then
+ * {@code stop <id>}). Keeps a log of what it did, and can tell whether a stopped behaviour is active again.
+ * <p>
+ * Threads: confined to the runner's loop thread.
+ */
+final class FaultInjector {
+    /** {@code lb -s} rows: {@code    42|Active     |    1|eu.brain.iot.behaviours.robot (0.1.0.SNAPSHOT)}. */
+    private static final Pattern BUNDLE_ROW = Pattern.compile("^\\s*(\\d+)\\|(\\w+)\\s*\\|\\s*\\d+\\|(\\S+).*$");
+    private static final Duration SHELL_TIMEOUT = Duration.ofSeconds(20);
+
+    private final RobotSim sim;
+    private final FabricNode node;
+    private final List<Pending> pending = new ArrayList<>();
+    private final List<String> log = new ArrayList<>();
+    private final List<String> stoppedBundles = new ArrayList<>();
+
+    /** A fault action due at a warehouse time. */
+    private record Pending(long atMillis, PlannedFault fault, boolean start) {
+    }
+
+    FaultInjector(RobotSim sim, FabricNode node, List<PlannedFault> faults) {
+        this.sim = sim;
+        this.node = node;
+        for (PlannedFault f : faults) {
+            pending.add(new Pending(f.atMillis(), f, true));
+            if (f.endsAtMillis() > f.atMillis()) {
+                pending.add(new Pending(f.endsAtMillis(), f, false));
+            }
+        }
+        pending.sort(Comparator.comparingLong(Pending::atMillis));
+    }
+
+    /** Applies every action due at or before this warehouse time; returns what was done, for the terminal. */
+    List<String> apply(long warehouseMillis) {
+        List<String> done = new ArrayList<>();
+        while (!pending.isEmpty() && pending.get(0).atMillis() <= warehouseMillis) {
+            Pending p = pending.remove(0);
+            String what = p.fault().inject(this, p.start());
+            String line = "[" + WarehouseTime.format(warehouseMillis) + "] fault: " + what;
+            log.add(line);
+            done.add(line);
+        }
+        return done;
+    }
+
+    /** Ends every fault still going on (a robot still offline comes back), so that the end state is judged fairly. */
+    void clear() {
+        for (Pending p : pending) {
+            if (!p.start()) {
+                p.fault().inject(this, false);
+            }
+        }
+        pending.clear();
+    }
+
+    String offline(PlannedFault.Offline off, boolean on) {
+        int robot = sim.robotIds().indexOf(off.robot());
+        FaultSettings now = sim.faults().effective(robot);
+        sim.faults().setOwn(robot, new FaultSettings(now.latencyMs(), now.errorRate(), now.malformedRate(),
+                now.dropRate(), on));
+        return off.robot() + (on ? " goes offline (robot-sim answers 503, the robot stands still) for "
+                + WarehouseTime.format(off.forMillis()) : " is back online");
+    }
+
+    String stopBehaviour(PlannedFault.StopBehaviour stop) {
+        String name = stop.symbolicName();
+        try {
+            Bundle b = bundle(name);
+            if (b == null) {
+                return "no bundle " + name + " is installed in the node: nothing to stop";
+            }
+            List<String> answer = node.shell("stop " + b.id(), SHELL_TIMEOUT).stream()
+                    .filter(l -> !l.isBlank()).toList();
+            stoppedBundles.add(name);
+            return "stopped " + name + " (bundle " + b.id() + ", was " + b.state() + ") in the node's shell"
+                    + (answer.isEmpty() ? "" : ": " + String.join(" ", answer));
+        } catch (java.io.IOException e) {
+            return "could not stop " + name + ": " + e.getMessage();
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return "interrupted while stopping " + name;
+        }
+    }
+
+    /** The bundle with that symbolic name in the node, or null. */
+    Bundle bundle(String symbolicName) throws java.io.IOException, InterruptedException {
+        for (String line : node.shell("lb -s", SHELL_TIMEOUT)) {
+            Matcher m = BUNDLE_ROW.matcher(line);
+            if (m.matches() && m.group(3).equals(symbolicName)) {
+                return new Bundle(Long.parseLong(m.group(1)), m.group(2));
+            }
+        }
+        return null;
+    }
+
+    /** Bundles this run stopped (symbolic names). */
+    List<String> stoppedBundles() {
+        return List.copyOf(stoppedBundles);
+    }
+
+    List<String> log() {
+        return List.copyOf(log);
+    }
+
+    /** A bundle as {@code lb -s} shows it. */
+    record Bundle(long id, String state) {
+    }
+}

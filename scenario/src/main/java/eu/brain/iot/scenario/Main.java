@@ -1,0 +1,44 @@
+package eu.brain.iot.scenario;
+
+import java.io.IOException;
+import java.io.PrintStream;
+import java.util.List;
+
+/** {@code java -jar warehouse-scenario.jar [options]}: exit 0 passed, 1 failed, 2 bad options. */
+public final class Main {
+    private Main() {
+    }
+
+    public static void main(String[] args) {
+        System.exit(run(args, System.out, System.err));
+    }
+
+    static int run(String[] args, PrintStream out, PrintStream err) {
+        Options options;
+        try {
+            options = OptionsParser.parse(args);
+        } catch (UsageException e) {
+            err.println("warehouse-scenario: " + e.getMessage());
+            err.print(OptionsParser.USAGE);
+            return 2;
+        }
+        if (options == null) {
+            out.print(OptionsParser.USAGE);
+            return 0;
+        }
+        try {
+            return new ScenarioRunner(options, List.of(args), out).run();
+        } catch (UsageException e) {
+            err.println("warehouse-scenario: " + e.getMessage());
+            err.print(OptionsParser.USAGE);
+            return 2;
+        } catch (IOException e) {
+            err.println("warehouse-scenario: " + e.getMessage());
+            return 1;
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            err.println("warehouse-scenario: interrupted");
+            return 1;
+        }
+    }
+}

@@ -1,0 +1,197 @@
+package eu.brain.iot.scenario;
+
+import eu.brain.iot.robotsim.RobotSim;
+import eu.brain.iot.robotsim.SimConfig;
+import eu.brain.iot.robotsim.world.SimRules;
+import eu.brain.iot.robotsim.world.WarehouseMap;
+import java.io.IOException;
+import java.io.PrintStream;
+import java.nio.file.Files;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * One scenario run: robot-sim (embedded, on a free loopback port, its clock at the asked speed and its deadlock
+ * threshold at the wait limit), a bare fabric node (own JVM) pointed at it; then, every 100 ms of wall time, a look
+ * at robot-sim's ground truth: faults injected when due, a progress line every few seconds, until every cart is in
+ * storage and every robot back in docking, the deadline, or the node's end. Then the verdict, the summary and the
+ * report; both processes stopped, also on Ctrl-C (a shutdown hook).
+ * <p>
+ * Threads: {@link #run} runs on the caller's thread, which owns everything here; the shutdown hook only stops the
+ * node and closes the simulator, both idempotent.
+ */
+final class ScenarioRunner {
+    private static final Duration NODE_READY_TIMEOUT = Duration.ofSeconds(180);
+    private static final Duration EDGE_TIMEOUT = Duration.ofSeconds(60);
+    private static final long LOOK_EVERY_MS = 100;
+
+    private final Options options;
+    private final List<String> arguments;
+    private final PrintStream out;
+
+    ScenarioRunner(Options options, List<String> arguments, PrintStream out) {
+        this.options = options;
+        this.arguments = List.copyOf(arguments);
+        this.out = out;
+    }
+
+    /** @return the exit code: 0 passed, 1 failed (or could not run) */
+    int run() throws UsageException, IOException, InterruptedException {
+        WarehouseMap map = Warehouses.of(options);
+        checkFaultRobots(map);
+        Files.createDirectories(options.runDir());
+        long wall0 = System.nanoTime();
+        SimConfig config = SimConfig.builder().map(map)
+                .rules(new SimRules(options.seed(), 2, 2, options.waitLimitSteps(), -1))
+                .speed(options.speed()).port(0).build();
+        try (RobotSim sim = RobotSim.start(config)) {
+            out.printf("robot-sim: warehouse '%s' %dx%d, %d robots, %d carts, %d doors, seed %d, speed x%s, at %s%n",
+                    map.name(), map.width(), map.height(), map.robots().size(), map.carts().size(),
+                    map.doors().size(), options.seed(), options.speed(), sim.baseUri());
+            int httpPort = NodeSetup.freePort();
+            java.nio.file.Path configDir = NodeSetup.write(options, sim.baseUri());
+            FabricNode node = FabricNode.start(options.root(), configDir, httpPort, options.runDir().resolve("node.log"));
+            Thread hook = new Thread(() -> {
+                System.err.println("warehouse-scenario: stopped before the end; stopping the node and robot-sim");
+                node.stop();
+                sim.close();
+            }, "scenario-shutdown");
+            Runtime.getRuntime().addShutdownHook(hook);
+            try {
+                out.printf("node: pid %d, REST API http://127.0.0.1:%d/sensinact, config %s, log %s%n", node.pid(),
+                        httpPort, configDir, node.log());
+                WorldSnapshot start;
+                long startNanos;
+                Duration cpu0;
+                try {
+                    node.awaitReady(NODE_READY_TIMEOUT);
+                    // the run starts when the node is up: its edge polls from then on, and behaviours may act at
+                    // once, before its REST API answers
+                    start = new WorldSnapshot(sim.worldDocument());
+                    startNanos = System.nanoTime();
+                    cpu0 = node.cpu();
+                    List<String> devices = new ArrayList<>(sim.robotIds());
+                    devices.addAll(sim.doorIds());
+                    new EdgeProbe(httpPort).awaitDevices(devices, EDGE_TIMEOUT);
+                } catch (IOException e) {
+                    out.println("scenario: the node did not start: " + e.getMessage());
+                    return 1;
+                }
+                return observe(sim, node, new Start(start, startNanos, startNanos - wall0, cpu0));
+            } finally {
+                node.stop();
+                try {
+                    Runtime.getRuntime().removeShutdownHook(hook);
+                } catch (IllegalStateException e) {
+                    // already shutting down: the hook runs anyway
+                }
+            }
+        }
+    }
+
+    private void checkFaultRobots(WarehouseMap map) throws UsageException {
+        List<String> ids = map.robots().stream().map(p -> p.id()).toList();
+        for (PlannedFault f : options.faults()) {
+            try {
+                f.check(ids);
+            } catch (IllegalArgumentException e) {
+                throw new UsageException(e.getMessage());
+            }
+        }
+    }
+
+    /**
+     * The run's start: when the node was up.
+     *
+     * @param world          robot-sim's world then
+     * @param nanos          {@link System#nanoTime()} then
+     * @param nodeStartNanos from the runner's start until then
+     * @param nodeCpu        the node's CPU time then
+     */
+    private record Start(WorldSnapshot world, long nanos, long nodeStartNanos, Duration nodeCpu) {
+    }
+
+    private int observe(RobotSim sim, FabricNode node, Start begin) throws IOException, InterruptedException {
+        WorldSnapshot start = begin.world();
+        long wall0 = begin.nanos();
+        long nodeStartNanos = begin.nodeStartNanos();
+        Duration cpu0 = begin.nodeCpu();
+        out.printf("node up after %.1f s (the run starts at robot-sim step %d), its edge sees the fleet; wait limit "
+                        + "%s, deadline %s of warehouse time%n", nodeStartNanos / 1e9, start.step(),
+                WarehouseTime.format(options.waitLimitMs()), WarehouseTime.format(options.deadlineMs()));
+        FaultInjector faults = new FaultInjector(sim, node, options.faults());
+        WorldSnapshot now = start;
+        long deliveredAfter = -1;
+        long nextProgress = 0;
+        boolean deadlineHit = false;
+        while (true) {
+            now = new WorldSnapshot(sim.worldDocument());
+            long t = Figures.elapsedMs(start, now);
+            faults.apply(t).forEach(out::println);
+            if (deliveredAfter < 0 && now.allDelivered()) {
+                deliveredAfter = t;
+            }
+            long wall = (System.nanoTime() - wall0) / 1_000_000;
+            boolean finished = now.finished();
+            if (wall >= nextProgress || finished) {
+                out.println(ProgressLine.of(start, now));
+                nextProgress = wall + options.progressMs();
+            }
+            if (finished) {
+                break;
+            }
+            if (t >= options.deadlineMs()) {
+                deadlineHit = true;
+                break;
+            }
+            if (!node.alive()) {
+                out.println("scenario: the node ended during the run (see " + node.log() + ")");
+                break;
+            }
+            Thread.sleep(LOOK_EVERY_MS);
+        }
+        long wallMs = (System.nanoTime() - wall0) / 1_000_000;
+        long cpuMs = node.cpu().minus(cpu0).toMillis();
+        faults.clear();
+        BusStats bus = null;
+        List<Verdict.Check> extra = new ArrayList<>();
+        if (node.alive()) {
+            try {
+                bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+            } catch (IOException e) {
+                out.println("scenario: could not read the bus statistics: " + e.getMessage());
+            }
+            extra.addAll(behavioursBack(faults));
+        } else {
+            extra.add(new Verdict.Check("the node ran until the end", false, "it ended during the run"));
+        }
+        Verdict judged = Judge.judge(now, options.waitLimitMs(), deadlineHit ? Figures.elapsedMs(start, now) : -1);
+        List<Verdict.Check> checks = new ArrayList<>(judged.checks());
+        checks.addAll(extra);
+        Verdict verdict = new Verdict(List.copyOf(checks));
+        ReportWriter.Run run = new ReportWriter.Run(arguments, options, start, now, verdict, wallMs,
+                nodeStartNanos / 1_000_000, deliveredAfter, bus, cpuMs, faults.log(), node.log());
+        ReportWriter.write(options.report(), ReportWriter.report(run));
+        Summary.print(out, run);
+        out.println("report: " + options.report());
+        return verdict.passed() ? 0 : 1;
+    }
+
+    /** For each behaviour this run stopped: is it active again (brought back by the BMS)? */
+    private List<Verdict.Check> behavioursBack(FaultInjector faults) throws InterruptedException {
+        List<Verdict.Check> checks = new ArrayList<>();
+        for (String name : faults.stoppedBundles()) {
+            String state;
+            try {
+                FaultInjector.Bundle b = faults.bundle(name);
+                state = b == null ? "not installed" : b.state();
+            } catch (IOException e) {
+                state = "unknown (" + e.getMessage() + ")";
+            }
+            checks.add(new Verdict.Check("stopped behaviour " + name + " brought back", state.equals("Active"),
+                    "at the end: " + state));
+        }
+        return checks;
+    }
+}

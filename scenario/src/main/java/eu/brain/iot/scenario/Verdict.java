@@ -1,0 +1,19 @@
+package eu.brain.iot.scenario;
+
+import java.util.List;
+
+/** The judge's findings: each check with whether it passed and what was seen. Immutable. */
+record Verdict(List<Check> checks) {
+
+    /** One requirement checked on the ground truth. */
+    record Check(String name, boolean passed, String detail) {
+    }
+
+    boolean passed() {
+        return checks.stream().allMatch(Check::passed);
+    }
+
+    List<Check> failed() {
+        return checks.stream().filter(c -> !c.passed()).toList();
+    }
+}

@@ -1,0 +1,114 @@
+package eu.brain.iot.scenario;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.assertj.core.api.Assertions.assertThatThrownBy;
+
+import java.io.ByteArrayOutputStream;
+import java.io.PrintStream;
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import org.junit.jupiter.api.Test;
+
+class OptionsParserTest {
+
+    @Test
+    void defaultsAreThePapersWarehouseTenTimesFasterWithATenSecondLimit() throws Exception {
+        Options o = OptionsParser.parse();
+        assertThat(o.map()).isNull();
+        assertThat(o.generate()).isNull();
+        assertThat(o.speed()).isEqualTo(10);
+        assertThat(o.pollPeriodMs()).as("0.5 s of warehouse time").isEqualTo(50);
+        assertThat(o.waitLimitMs()).isEqualTo(10_000);
+        assertThat(o.waitLimitSteps()).as("robot-sim's --deadlock-steps").isEqualTo(20);
+        assertThat(o.deadlineMs()).isEqualTo(30 * 60_000);
+        assertThat(o.behaviours()).isTrue();
+        assertThat(o.report()).isEqualTo(o.runDir().resolve("report.json"));
+    }
+
+    @Test
+    void generateTakesTheIssuesLargerWarehouseByDefault() throws Exception {
+        Options o = OptionsParser.parse("--generate", "--seed", "7", "--wait-limit", "7.5", "--speed", "4");
+        assertThat(o.generate()).isEqualTo(new Options.Generate(60, 30, 30, 60, 1));
+        assertThat(o.deadlineMs()).as("3 warehouse minutes per cart").isEqualTo(180 * 60_000L);
+        assertThat(o.waitLimitSteps()).isEqualTo(15);
+        assertThat(o.pollPeriodMs()).isEqualTo(125);
+        assertThat(o.seed()).isEqualTo(7);
+    }
+
+    @Test
+    void faultsAreReadWithTheirTimes() throws Exception {
+        Options o = OptionsParser.parse("--fault-offline", "robot2@60s+30s", "--fault-offline", "robot1@1.5min+500ms",
+                "--stop-behaviour", "robot@90s");
+        assertThat(o.faults()).containsExactly(new PlannedFault.Offline("robot2", 60_000, 30_000),
+                new PlannedFault.Offline("robot1", 90_000, 500), new PlannedFault.StopBehaviour("robot", 90_000));
+        assertThat(((PlannedFault.StopBehaviour) o.faults().get(2)).symbolicName())
+                .isEqualTo("eu.brain.iot.behaviours.robot");
+    }
+
+    @Test
+    void badOptionsSayWhatIsWrong() {
+        assertThatThrownBy(() -> OptionsParser.parse("--speed", "fast"))
+                .hasMessage("--speed must be a number 0.1..1000.0, found 'fast'");
+        assertThatThrownBy(() -> OptionsParser.parse("--robots", "3"))
+                .hasMessage("--robots needs --generate (it sizes a generated warehouse)");
+        assertThatThrownBy(() -> OptionsParser.parse("--generate", "--map", "x.map"))
+                .hasMessageContaining("exclude each other");
+        assertThatThrownBy(() -> OptionsParser.parse("--map", "/no/such.map")).hasMessage("--map /no/such.map: no such file");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@60s"))
+                .hasMessageStartingWith("--fault-offline 'robot2@60s': write ROBOT@TIME+DURATION");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@soon+3s"))
+                .hasMessageContaining("'soon' is not a duration");
+        assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "robot"))
+                .hasMessageStartingWith("--stop-behaviour 'robot': write BEHAVIOUR@TIME");
+        assertThatThrownBy(() -> OptionsParser.parse("--seed", "1", "--seed", "2")).hasMessage("--seed given twice");
+        assertThatThrownBy(() -> OptionsParser.parse("--deadline")).hasMessage("--deadline needs a value");
+        assertThatThrownBy(() -> OptionsParser.parse("--colour")).hasMessage("unknown option '--colour'");
+        assertThatThrownBy(() -> OptionsParser.parse("fast")).hasMessageStartingWith("unexpected argument 'fast'");
+        assertThatThrownBy(() -> OptionsParser.parse("--node-config", "pom.xml"))
+                .hasMessageContaining("not a readable .cfg or .config file");
+    }
+
+    @Test
+    void mainPrintsOneLineAndTheUsageAndExitsWith2() {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--wait-limit", "-3"}, new PrintStream(out), new PrintStream(err));
+        assertThat(code).isEqualTo(2);
+        String text = err.toString(StandardCharsets.UTF_8);
+        assertThat(text).startsWith("warehouse-scenario: --wait-limit must be a number 0.5..3600.0, found '-3'\n"
+                + "Usage: ./warehouse-scenario");
+        assertThat(text).doesNotContain("Exception");
+        assertThat(out.size()).isZero();
+    }
+
+    @Test
+    void anUnknownRobotInAFaultIsABadOptionToo(@org.junit.jupiter.api.io.TempDir Path dir) {
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--fault-offline", "robot9@1s+1s", "--run-dir", dir.toString()},
+                new PrintStream(new ByteArrayOutputStream()), new PrintStream(err));
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8))
+                .startsWith("warehouse-scenario: --fault-offline: no robot 'robot9' in this warehouse (robot1, robot2, "
+                        + "robot3)");
+    }
+
+    @Test
+    void aMapThatDoesNotParseIsABadOptionNamingThePlace(@org.junit.jupiter.api.io.TempDir Path dir) throws Exception {
+        Path map = dir.resolve("bad.map");
+        java.nio.file.Files.writeString(map, "map:\n#####\n#RxC#\n#####\n");
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--map", map.toString(), "--run-dir", dir.resolve("run").toString()},
+                new PrintStream(new ByteArrayOutputStream()), new PrintStream(err));
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("warehouse-scenario: --map: ")
+                .contains("bad.map:3:3: unknown cell 'x'");
+        assertThat(dir.resolve("run")).as("nothing started").doesNotExist();
+    }
+
+    @Test
+    void helpPrintsTheUsageAndExitsWith0() {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        assertThat(Main.run(new String[] {"--help"}, new PrintStream(out), System.err)).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("--fault-offline R@T+D");
+    }
+}
