@@ -61,14 +61,16 @@ class CorridorIntegrationTest {
             JsonNode world = w.until("both carts in storage", 60, Warehouse::cartsInStorage);
             assertThat(world.get("counters").get("deadlocks").asLong()).as(Warehouse.describe(world)).isZero();
             assertThat(world.get("counters").get("nearMisses").asLong()).as("they did meet").isPositive();
+            assertThat(w.outcomes).as("robot1 stepped aside: its go-to cancelled")
+                    .anyMatch(o -> "CancelMissionCommand".equals(o.command) && "robot1".equals(o.deviceId));
         }
     }
 
     @Test
     void withoutTheOrchestratorTheyStayDeadlocked() throws Exception {
         Bundle orchestrator = orchestrator();
-        orchestrator.stop();
         try (Warehouse w = new Warehouse(context, cm, corridor())) {
+            orchestrator.stop();
             w.awaitEdge(model, 2, 2);
             JsonNode world = w.until("a deadlock counted", 60,
                     x -> x.get("counters").get("deadlocks").asLong() > 0);

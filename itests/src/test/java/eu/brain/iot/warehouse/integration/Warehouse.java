@@ -14,7 +14,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
 
+import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.BundleException;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.cm.Configuration;
 import org.osgi.service.cm.ConfigurationAdmin;
@@ -43,6 +45,10 @@ final class Warehouse implements AutoCloseable {
     static final String ROBOT_PID = "eu.brain.iot.behaviours.robot";
     static final String DOOR_PID = "eu.brain.iot.behaviours.door";
 
+    /** The behaviour bundles, in the order they are started. */
+    static final List<String> BEHAVIOURS = List.of("eu.brain.iot.behaviours.orchestrator",
+            "eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot");
+
     final RobotSim sim;
     final double speed;
     final List<CommandOutcome> outcomes = new CopyOnWriteArrayList<>();
@@ -50,8 +56,10 @@ final class Warehouse implements AutoCloseable {
     private final ServiceRegistration<?> recorder;
     private final HttpClient http = HttpClient.newHttpClient();
     private final ObjectMapper json = new ObjectMapper();
+    private final BundleContext context;
 
     Warehouse(BundleContext context, ConfigurationAdmin cm, SimConfig config) throws IOException {
+        this.context = context;
         this.sim = RobotSim.start(config);
         this.speed = config.speed();
         Hashtable<String, Object> props = new Hashtable<>();
@@ -63,6 +71,29 @@ final class Warehouse implements AutoCloseable {
         configure(cm, DOOR_PID, Map.of("speed", speed));
         configure(cm, EDGE_PID, Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", poll,
                 "world.period.ms", 4 * poll, "backoff.max.ms", 40 * poll));
+        restartBehaviours(context);
+    }
+
+    /** The behaviours start afresh for each warehouse (their models' places and data), as on a new node. */
+    private static void restartBehaviours(BundleContext context) {
+        List<Bundle> behaviours = new ArrayList<>();
+        for (String name : BEHAVIOURS) {
+            for (Bundle b : context.getBundles()) {
+                if (name.equals(b.getSymbolicName())) {
+                    behaviours.add(b);
+                }
+            }
+        }
+        try {
+            for (Bundle b : behaviours) {
+                b.stop();
+            }
+            for (Bundle b : behaviours) {
+                b.start();
+            }
+        } catch (BundleException e) {
+            throw new IllegalStateException("cannot restart the behaviours: " + e.getMessage(), e);
+        }
     }
 
     private void configure(ConfigurationAdmin cm, String pid, Map<String, Object> values) throws IOException {
@@ -93,9 +124,26 @@ final class Warehouse implements AutoCloseable {
                 return done.test(last[0]);
             });
         } catch (org.awaitility.core.ConditionTimeoutException e) {
-            throw new AssertionError(what + ": not within " + seconds + " s; " + describe(last[0]), e);
+            throw new AssertionError(what + ": not within " + seconds + " s; " + describe(last[0]) + "; behaviours "
+                    + behaviours(), e);
         }
         return last[0];
+    }
+
+    /** @return the smart behaviours registered now, by component name and bundle state, for failure messages */
+    private String behaviours() {
+        StringBuilder b = new StringBuilder();
+        try {
+            org.osgi.framework.ServiceReference<?>[] refs = context.getServiceReferences(
+                    SmartBehaviour.class.getName(), null);
+            for (org.osgi.framework.ServiceReference<?> r : refs == null ? new org.osgi.framework.ServiceReference<?>[0]
+                    : refs) {
+                b.append(r.getProperty("component.name")).append('/').append(r.getBundle().getState()).append(' ');
+            }
+        } catch (org.osgi.framework.InvalidSyntaxException e) {
+            b.append(e.getMessage());
+        }
+        return b.toString();
     }
 
     /** robot-sim's {@code GET /world}: its ground truth. */

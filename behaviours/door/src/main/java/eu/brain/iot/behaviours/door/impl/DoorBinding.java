@@ -40,9 +40,12 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * ({@link DoorExterns}). {@code DoorStateChanged} is this bundle's trigger: no other behaviour consumes it, so the
  * first door state the edge announces has the door behaviour installed on a bare node.
  * <p>
+ * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
+ * components with a service until someone gets it).
+ * <p>
  * Threads: {@link #notify} hands every event to the binding's own thread, which owns the state and publishes.
  */
-@Component(service = SmartBehaviour.class, configurationPid = DoorConfig.PID)
+@Component(service = SmartBehaviour.class, configurationPid = DoorConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { DoorStateChanged.class, CommandOutcome.class }, author = "BRAIN-IoT fabric",
         name = "Door binding", description = "Binds the door model's ports to the edge's door events")
 public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {

@@ -105,7 +105,8 @@ final class Errands {
             }
         }
         if (best == null) {
-            return Optional.empty();
+            errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), null, e.dock()));
+            return Optional.empty(); // asked again when the robot goes on (a placed cart may free the way)
         }
         drops.add(best);
         Errand next = new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), best, e.dock());
@@ -141,12 +142,14 @@ final class Errands {
      */
     private boolean leavesRoom(Cell c, Set<Cell> floor, Grid grid) {
         Set<Cell> blocked = new HashSet<>(floor);
-        blocked.addAll(drops);
         blocked.add(c);
+        Set<Cell> mustReachOut = new HashSet<>(drops); // the cells other robots are carrying carts to
         for (Cell n : grid.neighbours(c)) {
-            if (blocked.contains(n) || grid.area(n) != Grid.STORAGE) {
-                continue;
+            if (!blocked.contains(n) && grid.area(n) == Grid.STORAGE) {
+                mustReachOut.add(n);
             }
+        }
+        for (Cell n : mustReachOut) {
             if (grid.nearest(n, x -> grid.area(x) != Grid.STORAGE, blocked) == null) {
                 return false;
             }

@@ -61,10 +61,13 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * Command outcomes go to {@link RobotFleet#outcome}; mission ends clear its pending go-tos. A robot the edge cannot
  * reach gets no event until it answers again, then goes on where it was.
  * <p>
+ * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
+ * components with a service until someone gets it).
+ * <p>
  * Threads: {@link #notify} (the bus's delivery thread) hands every event to the binding's own thread, which owns
  * all of this class's state and is the only one that evaluates the rules and publishes.
  */
-@Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID)
+@Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { RobotPositionChanged.class, ObstacleDetected.class, ObstacleCleared.class,
         MissionFinished.class, MissionFailed.class, CommandOutcome.class, DeviceUnreachable.class,
         DeviceRecovered.class }, author = "BRAIN-IoT fabric", name = "Robot binding",
@@ -228,6 +231,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
                     storageToDocking(component);
+                } else if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null && s.idle()) {
+                    fleet.resume(robot, "looking for a free storage cell"); // carrying, no storage cell yet
                 } else if (moved.remove(robot)) {
                     unloadToUnload(component, area);
                 }

@@ -89,7 +89,10 @@ public final class RobotFleet {
                 LOG.log(System.Logger.Level.INFO, "{0} goes for {1} at {2}", robot, e.cart(), e.cartCell());
             }
         }
-        Cell goal = e.goal() != null ? e.goal() : e.dock();
+        if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null) {
+            e = errands.lifted(robot, s.cell(), view.carts(), grid.get()).orElse(e); // a storage cell at last?
+        }
+        Cell goal = e.goal() != null ? e.goal() : e.leg() == Errands.Leg.TO_STORAGE ? null : e.dock();
         if (goal != null) {
             goTo(robot, s, goal, why);
         }
