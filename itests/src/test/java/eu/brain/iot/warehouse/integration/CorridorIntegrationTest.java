@@ -17,7 +17,6 @@ import com.fasterxml.jackson.databind.JsonNode;
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.robotsim.SimConfig;
 import eu.brain.iot.robotsim.world.MapParser;
-import eu.brain.iot.robotsim.world.SimRules;
 import eu.brain.iot.robotsim.world.WarehouseMap;
 
 /**
@@ -26,8 +25,6 @@ import eu.brain.iot.robotsim.world.WarehouseMap;
  * rules leave them deadlocked (its deadlock counter), which is the case the orchestrator exists for.
  */
 class CorridorIntegrationTest {
-
-    static final double SPEED = 20;
 
     @InjectBundleContext
     BundleContext context;
@@ -41,7 +38,10 @@ class CorridorIntegrationTest {
     private static SimConfig corridor() throws Exception {
         try (InputStream in = CorridorIntegrationTest.class.getResourceAsStream("/corridor.map")) {
             WarehouseMap map = MapParser.parse("corridor.map", new String(in.readAllBytes(), StandardCharsets.UTF_8));
-            return SimConfig.builder().map(map).speed(SPEED).rules(new SimRules(1L, 2, 2, 20, -1)).build();
+            // speed 10: a head-on meeting is reported after 10 steps (patience) and must be resolved before robot-sim
+            // counts it a deadlock (20 steps, REQ-2's 10 s): 500 ms of wall time for the rendezvous, the commands and
+            // the first moves, on a loaded 2-core machine
+            return Warehouse.config(map, 10);
         }
     }
 

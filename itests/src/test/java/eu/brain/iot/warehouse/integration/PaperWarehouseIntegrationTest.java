@@ -13,8 +13,8 @@ import com.fasterxml.jackson.databind.JsonNode;
 
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.model.api.DeviceModel;
-import eu.brain.iot.robotsim.SimConfig;
-import eu.brain.iot.robotsim.world.SimRules;
+import eu.brain.iot.edge.model.api.ResourceStatus;
+import eu.brain.iot.robotsim.fault.FaultSettings;
 import eu.brain.iot.robotsim.world.WarehouseMap;
 
 /**
@@ -25,9 +25,6 @@ import eu.brain.iot.robotsim.world.WarehouseMap;
  * deadlock counter with 20 steps stays 0), and every command the behaviours sent accepted.
  */
 class PaperWarehouseIntegrationTest {
-
-    /** 20 steps per 0.5 s of wall time: the errands take about a minute of warehouse time, a few seconds here. */
-    static final double SPEED = 20;
 
     @InjectBundleContext
     BundleContext context;
@@ -40,9 +37,7 @@ class PaperWarehouseIntegrationTest {
 
     @Test
     void everyCartReachesStorageAndEveryRobotItsDock() throws Exception {
-        SimConfig config = SimConfig.builder().map(WarehouseMap.paper()).speed(SPEED)
-                .rules(new SimRules(1L, 2, 2, 20, -1)).build();
-        try (Warehouse w = new Warehouse(context, cm, config)) {
+        try (Warehouse w = new Warehouse(context, cm, Warehouse.config(WarehouseMap.paper()))) {
             w.awaitEdge(model, 3, 3);
             JsonNode world = w.until("every cart in storage, every robot docked", 90,
                     x -> Warehouse.cartsInStorage(x) && Warehouse.robotsDocked(x));
@@ -54,5 +49,40 @@ class PaperWarehouseIntegrationTest {
             assertThat(w.outcomes.stream().filter(o -> "PlaceCartCommand".equals(o.command)).count()).isEqualTo(3);
             assertThat(w.outcomes.stream().map(o -> o.command)).contains("OpenDoorCommand");
         }
+    }
+
+    /**
+     * A robot goes offline while it carries a cart (robot-sim's fault API): the edge reports it unreachable, the
+     * binding leaves it alone, the others go on (stopped behind it, they wait); once it answers again it finishes
+     * its errand where it was, and the warehouse completes.
+     */
+    @Test
+    void aRobotOfflineMidErrandFinishesItAfterItRecovers() throws Exception {
+        try (Warehouse w = new Warehouse(context, cm, Warehouse.config(WarehouseMap.paper()))) {
+            w.awaitEdge(model, 3, 3);
+            JsonNode carrying = w.until("a robot carries a cart", 60, x -> carrier(x) != null);
+            String robot = carrier(carrying);
+            int index = Integer.parseInt(robot.substring("robot".length())) - 1;
+            w.sim.faults().setOwn(index, new FaultSettings(0, 0, 0, 0, true));
+            org.awaitility.Awaitility.await("the edge reports " + robot + " unreachable")
+                    .atMost(java.time.Duration.ofSeconds(20))
+                    .until(() -> model.provider(robot).orElseThrow().status() == ResourceStatus.UNREACHABLE);
+            JsonNode during = w.world();
+            w.sim.faults().setOwn(index, null); // it follows the fleet again: no fault
+            JsonNode world = w.until("every cart in storage, every robot docked", 90,
+                    x -> Warehouse.cartsInStorage(x) && Warehouse.robotsDocked(x));
+            assertThat(Warehouse.cartsInStorage(during)).as("not done while " + robot + " was offline").isFalse();
+            assertThat(world.get("counters").get("deadlocks").asLong()).as(Warehouse.describe(world)).isZero();
+        }
+    }
+
+    /** @return the robot carrying a cart in this world, or {@code null} */
+    private static String carrier(JsonNode world) {
+        for (JsonNode c : world.get("carts")) {
+            if (!c.get("carriedBy").isNull()) {
+                return c.get("carriedBy").asText();
+            }
+        }
+        return null;
     }
 }

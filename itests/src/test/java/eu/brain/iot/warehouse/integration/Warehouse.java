@@ -45,6 +45,23 @@ final class Warehouse implements AutoCloseable {
     static final String ROBOT_PID = "eu.brain.iot.behaviours.robot";
     static final String DOOR_PID = "eu.brain.iot.behaviours.door";
 
+    /** The speed factor of the tests' warehouses: 20 steps per 0.5 s of wall time. */
+    static final double SPEED = 20;
+
+    /**
+     * A warehouse of this map at {@link #SPEED}, seed 1, where robots waiting on each other for 20 steps (10 s of
+     * warehouse time, REQ-2's limit) count as a deadlock.
+     */
+    static SimConfig config(eu.brain.iot.robotsim.world.WarehouseMap map) {
+        return config(map, SPEED);
+    }
+
+    /** The same at another speed factor. */
+    static SimConfig config(eu.brain.iot.robotsim.world.WarehouseMap map, double speed) {
+        return SimConfig.builder().map(map).speed(speed).rules(new eu.brain.iot.robotsim.world.SimRules(1L, 2, 2, 20,
+                -1)).build();
+    }
+
     /** The behaviour bundles, in the order they are started. */
     static final List<String> BEHAVIOURS = List.of("eu.brain.iot.behaviours.orchestrator",
             "eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot");

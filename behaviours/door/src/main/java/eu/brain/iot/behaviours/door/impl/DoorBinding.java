@@ -3,9 +3,6 @@ package eu.brain.iot.behaviours.door.impl;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -14,6 +11,7 @@ import org.osgi.service.component.annotations.Reference;
 
 import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
 import eu.brain.iot.behaviours.events.DoorBehaviorClosed;
+import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -57,11 +55,7 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
     private final DoorBehaviorBehaviour model;
     private final int closeAfter;
     private final int near;
-    private final ScheduledExecutorService thread = new ScheduledThreadPoolExecutor(1, r -> {
-        Thread t = new Thread(r, "door-binding");
-        t.setDaemon(true);
-        return t;
-    });
+    private final BindingThread thread;
 
     // binding thread only
     private final Map<String, Integer> quietLooks = new HashMap<>();
@@ -75,15 +69,13 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
         this.model = (DoorBehaviorBehaviour) model;
         this.closeAfter = Math.max(1, config.close_after_polls());
         this.near = Math.max(1, config.near_cells());
-        double speed = config.speed() > 0 ? config.speed() : 1;
-        long pollNanos = Math.max(TimeUnit.MILLISECONDS.toNanos(5),
-                (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed));
-        thread.scheduleWithFixedDelay(this::look, pollNanos, pollNanos, TimeUnit.NANOSECONDS);
+        this.thread = new BindingThread("door-binding", config.speed(), config.poll_period_ms());
+        thread.start(this::look);
     }
 
     @Deactivate
     void deactivate() {
-        thread.shutdownNow();
+        thread.close();
     }
 
     @Override

@@ -31,7 +31,9 @@ import eu.brain.iot.eventing.api.EventBus;
  * <li>F faces R (head-on, which the fleet's own rules leave deadlocked): one of them yields, the robot without a
  * cart to the robot carrying one, else the robot with the higher number. The yielding robot gets the nearest free
  * cell off the other's path (searched through free cells; not a doorway; for a robot carrying a cart, not under
- * another cart), encoded as {@code -(1 + x + 1000 y)}; the other waits and drives on once it is clear.</li>
+ * another cart; reached by a shortest path that meets no robot), encoded as {@code -(1 + x + 1000 y)}; the other
+ * waits and drives on once it is clear. When the robot that should yield has no such cell, the other steps aside
+ * instead if it has one.</li>
  * </ul>
  * Each robot's answer depends only on the pair, so two robots that report the same meeting at different times
  * get answers that agree. Thread-safe: the view and ledger are; no other state.
@@ -87,9 +89,10 @@ public final class CollisionGeometry {
         if (!f.ahead().equals(r.cell())) {
             return position; // not head-on: traffic, the robot waits
         }
-        if (!yields(r, f)) {
-            return position;
+        if (!yields(r, f) && freeCellOffPath(grid.get(), f, r, robots) != null) {
+            return position; // the other yields
         }
+        // r yields, or the other should but has no free cell to go to: then r steps aside if it can
         Cell aside = freeCellOffPath(grid.get(), r, f, robots);
         if (aside == null) {
             LOG.log(System.Logger.Level.WARNING, "{0} should yield to {1} but has no free cell to go to; it waits",
@@ -98,6 +101,12 @@ public final class CollisionGeometry {
         }
         LOG.log(System.Logger.Level.INFO, "{0} and {1} meet head-on: {0} steps aside to {2}", r.id(), f.id(), aside);
         return encode(aside);
+    }
+
+    /** @return whether the shortest path from {@code from} to {@code to} (around carts, if given) meets no robot */
+    private static boolean clearWay(Grid grid, Cell from, Cell to, Set<Cell> occupied, Set<Cell> carts) {
+        List<Cell> path = grid.path(from, to, carts);
+        return path != null && path.stream().noneMatch(occupied::contains);
     }
 
     /** @return whether {@code r} yields to {@code f}: no cart against a cart, else the higher number yields */
@@ -126,17 +135,19 @@ public final class CollisionGeometry {
                 otherPath.addAll(p);
             }
         }
-        Cell c = other.cell();
-        for (int i = 0; i < 3; i++) { // and the cells straight ahead of it, whatever its goal
-            c = c.toward(other.heading());
+        Cell c = other.cell().toward(other.heading());
+        while (grid.passable(c)) { // and every cell straight ahead of it up to a wall, whatever its goal
             otherPath.add(c);
+            c = c.toward(other.heading());
         }
         Set<Cell> cartCells = new HashSet<>(); // a robot carrying a cart cannot drive under another
         if (mover.carrying()) {
             view.carts().stream().filter(k -> k.carriedBy() == null).forEach(k -> cartCells.add(k.cell()));
         }
+        // and a cell the mover's own planner (a shortest path, robots ignored) reaches without meeting a robot
         java.util.function.Predicate<Cell> free = cell -> !otherPath.contains(cell) && !occupied.contains(cell)
-                && grid.area(cell) != Grid.DOORWAY && !cartCells.contains(cell);
+                && grid.area(cell) != Grid.DOORWAY && !cartCells.contains(cell)
+                && clearWay(grid, mover.cell(), cell, occupied, cartCells);
         // a cell of the mover's own area first (a parked robot stays in docking), else any
         Cell same = grid.nearest(mover.cell(), free.and(cell -> grid.area(cell) == mover.area()), occupied);
         return same != null ? same : grid.nearest(mover.cell(), free, occupied);

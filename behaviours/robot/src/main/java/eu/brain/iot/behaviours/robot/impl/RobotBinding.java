@@ -6,9 +6,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.ScheduledExecutorService;
-import java.util.concurrent.ScheduledThreadPoolExecutor;
-import java.util.concurrent.TimeUnit;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -21,6 +18,7 @@ import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
 import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
 import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
@@ -54,6 +52,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * UNLOAD   e carries to storage, s stands on its storage cell, idle       unloadToStorage        inStorage, 0
  * STORAGE  e goes home, s stands on its dock, idle                        storageToDocking       inDocking, 0
  * UNLOAD     (the same, when it went home through a resolved collision)
+ * UNLOAD   idle before its errand's goal, or without one while a cart     (none: RobotFleet.resume sends the go-to)
+ *          waits (a go-to cancelled, lost or never sent)
  * </pre>
  *
  * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
@@ -83,11 +83,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private final EventBus bus;
     private final RobotBehaviorBehaviour model;
     private final long patienceNanos;
-    private final ScheduledExecutorService thread = new ScheduledThreadPoolExecutor(1, r -> {
-        Thread t = new Thread(r, "robot-binding");
-        t.setDaemon(true);
-        return t;
-    });
+    private final BindingThread thread;
 
     // binding thread only
     private final Map<String, Long> blockedSince = new HashMap<>();
@@ -108,19 +104,17 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         this.fleet = fleet;
         this.bus = bus;
         this.model = (RobotBehaviorBehaviour) model;
-        double speed = config.speed() > 0 ? config.speed() : 1;
-        long pollNanos = Math.max(TimeUnit.MILLISECONDS.toNanos(5),
-                (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed));
-        this.pollNanos = pollNanos;
+        this.thread = new BindingThread("robot-binding", config.speed(), config.poll_period_ms());
+        this.pollNanos = thread.periodNanos();
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
-        thread.scheduleWithFixedDelay(this::safeTick, pollNanos, pollNanos, TimeUnit.NANOSECONDS);
+        thread.start(this::safeTick);
         LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
                 pollNanos / 1e6, patienceNanos / 1e6);
     }
 
     @Deactivate
     void deactivate() {
-        thread.shutdownNow();
+        thread.close();
     }
 
     @Override
@@ -233,6 +227,10 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                     storageToDocking(component);
                 } else if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null && s.idle()) {
                     fleet.resume(robot, "looking for a free storage cell"); // carrying, no storage cell yet
+                } else if (s.idle() && (e.goal() != null ? !s.cell().equals(e.goal()) : fleet.workLeft())) {
+                    // idle before its goal (a go-to cancelled, lost or refused, or never sent: the extern
+                    // functions ran while the fleet service was being replaced): it goes on; never sent twice
+                    fleet.resume(robot, "idle before its goal");
                 } else if (moved.remove(robot)) {
                     unloadToUnload(component, area);
                 }

@@ -68,7 +68,12 @@ public class RobotExterns implements RobotBehaviorExterns {
         Cell aside = sideStep(position);
         LOG.log(System.Logger.Level.INFO, "robot {0} moves to {1}", robotId,
                 aside != null ? "the side cell " + aside : position);
-        if (f == null || position == 0) {
+        if (position == 0) {
+            return;
+        }
+        if (f == null) {
+            LOG.log(System.Logger.Level.WARNING, "robot {0}: no fleet service (no edge, or being replaced): not "
+                    + "moved; the binding sends it on once it is back", robotId);
             return;
         }
         if (aside != null) {

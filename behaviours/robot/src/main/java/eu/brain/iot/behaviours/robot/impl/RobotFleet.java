@@ -25,7 +25,8 @@ import eu.brain.iot.eventing.api.EventBus;
 
 /**
  * What the robot model's extern functions do to the fleet, and the only place that sends robots commands: each
- * command is an edge command event on the bus with a commandId ({@link CommandLedger}), and each outcome is
+ * command is an edge command event on the bus with a commandId ({@link CommandLedger}), one robot's commands in
+ * the order given ({@link RobotCommands}: the next once the edge answered the one before), and each outcome is
  * checked ({@link #outcome}): a refusal is logged with the robot and the reason, counted, sent again up to
  * {@code command.retries} times, then the errand is planned anew (the cart goes back to the claim table). Where
  * the errands go is the {@link Errands} table's; where the robots and carts are, the edge's device model's.
@@ -40,10 +41,18 @@ public final class RobotFleet {
 
     private final FleetView view;
     private final CommandLedger ledger;
+    private final RobotCommands commands;
     private final Errands errands = new Errands();
     private final int retries;
-    /** The goal of the last go-to sent to each robot, until that mission ends (so it is never sent twice). */
-    private final Map<String, Cell> sentGoal = new ConcurrentHashMap<>();
+    /**
+     * The goal of the last go-to sent to each robot and when, until that mission ends (so it is never sent twice);
+     * one the robot does not show after {@link #pendingNanos} is taken as lost (its end was missed).
+     */
+    private final Map<String, SentGoal> sentGoal = new ConcurrentHashMap<>();
+    private final long pendingNanos;
+
+    private record SentGoal(Cell goal, long atNanos) {
+    }
     /** Refusals in a row per robot. */
     private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
     private final AtomicLong replans = new AtomicLong();
@@ -52,7 +61,11 @@ public final class RobotFleet {
     public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config) {
         this.view = new FleetView(model);
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
+        this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
+        double speed = config.speed() > 0 ? config.speed() : 1;
+        this.pendingNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) * 8
+                / speed);
     }
 
     FleetView view() {
@@ -157,9 +170,9 @@ public final class RobotFleet {
 
     /** A mission of the robot ended: a go-to to the goal last sent is no longer pending. */
     void missionEnded(String robot, String type, Integer goalX, Integer goalY) {
-        Cell goal = sentGoal.get(robot);
-        if ("goto".equals(type) && goal != null && goalX != null && goal.equals(new Cell(goalX, goalY == null ? -1
-                : goalY))) {
+        SentGoal sent = sentGoal.get(robot);
+        if ("goto".equals(type) && sent != null && goalX != null && sent.goal().equals(new Cell(goalX, goalY == null
+                ? -1 : goalY))) {
             sentGoal.remove(robot);
         }
     }
@@ -170,7 +183,7 @@ public final class RobotFleet {
      * is planned anew.
      */
     void outcome(CommandOutcome o) {
-        CommandLedger.Sent sent = ledger.answered(o);
+        CommandLedger.Sent sent = commands.answered(o);
         if (sent == null) {
             return;
         }
@@ -210,24 +223,21 @@ public final class RobotFleet {
     }
 
     private void goTo(String robot, RobotState s, Cell goal, String why) {
-        if (s.cell().equals(goal) && s.idle() || s.headingFor(goal) || goal.equals(sentGoal.get(robot))) {
+        SentGoal sent = sentGoal.get(robot);
+        boolean pending = sent != null && sent.goal().equals(goal) && System.nanoTime() - sent.atNanos() < pendingNanos;
+        if (s.cell().equals(goal) && s.idle() || s.headingFor(goal) || pending) {
             return; // there, or on its way: a go-to is never sent twice
         }
         GoToCommand go = new GoToCommand();
         go.deviceId = robot;
         go.x = goal.x();
         go.y = goal.y();
-        sentGoal.put(robot, goal);
+        sentGoal.put(robot, new SentGoal(goal, System.nanoTime()));
         send(go, why);
     }
 
     private void send(EdgeCommand command, String why) {
-        try {
-            ledger.send(command, why);
-        } catch (RuntimeException e) {
-            LOG.log(System.Logger.Level.WARNING, "{0}: {1} not sent ({2}): {3}", command.deviceId,
-                    command.getClass().getSimpleName(), why, e.getMessage());
-        }
+        commands.send(command, why); // in order: the next once the edge answered the one before
     }
 
     private static EdgeCommand copy(EdgeCommand c) {
