@@ -38,10 +38,7 @@ class CorridorIntegrationTest {
     private static SimConfig corridor() throws Exception {
         try (InputStream in = CorridorIntegrationTest.class.getResourceAsStream("/corridor.map")) {
             WarehouseMap map = MapParser.parse("corridor.map", new String(in.readAllBytes(), StandardCharsets.UTF_8));
-            // speed 10: a head-on meeting is reported after 10 steps (patience) and must be resolved before robot-sim
-            // counts it a deadlock (20 steps, REQ-2's 10 s): 500 ms of wall time for the rendezvous, the commands and
-            // the first moves, on a loaded 2-core machine
-            return Warehouse.config(map, 10);
+            return Warehouse.config(map);
         }
     }
 

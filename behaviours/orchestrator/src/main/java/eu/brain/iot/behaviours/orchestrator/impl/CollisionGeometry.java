@@ -73,7 +73,8 @@ public final class CollisionGeometry {
         if (f.idle() && !f.running()) {
             Cell aside = freeCellOffPath(grid.get(), f, r, robots);
             if (aside != null) {
-                LOG.log(System.Logger.Level.INFO, "{0} is parked in the way of {1}: sent to {2}", f.id(), r.id(), aside);
+                LOG.log(System.Logger.Level.INFO, "{0} is parked in the way of {1}: sent to {2}", f.id(), r.id(),
+                        aside);
                 GoToCommand go = new GoToCommand();
                 go.deviceId = f.id();
                 go.x = aside.x();

@@ -53,6 +53,9 @@ public final class RobotFleet {
 
     private record SentGoal(Cell goal, long atNanos) {
     }
+
+    /** The cell each robot was told to step aside to, until it leaves it. */
+    private final Map<String, Cell> aside = new ConcurrentHashMap<>();
     /** Refusals in a row per robot. */
     private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
     private final AtomicLong replans = new AtomicLong();
@@ -94,6 +97,18 @@ public final class RobotFleet {
             return;
         }
         RobotState s = state.get();
+        Cell side = aside.get(robot);
+        if (side != null) {
+            if (!s.cell().equals(side) && !s.idle()) {
+                return; // still on its way aside
+            }
+            boolean near = view.robots().stream().anyMatch(o -> !o.id().equals(robot)
+                    && o.cell().distance(s.cell()) <= 2);
+            if (s.cell().equals(side) && near) {
+                return; // it waits aside until the robot it let pass is gone
+            }
+            aside.remove(robot);
+        }
         errands.seen(robot, s.cell(), s.area() == Grid.DOCKING);
         Errands.Errand e = errands.of(robot);
         if (e.leg() == Errands.Leg.NONE) {
@@ -111,8 +126,12 @@ public final class RobotFleet {
         }
     }
 
-    /** The orchestrator told the robot to step aside to a cell: its go-to is cancelled, then it goes there. */
+    /**
+     * The orchestrator told the robot to step aside to a cell: its go-to is cancelled, then it goes there, and it
+     * waits there until no other robot is within two cells of it (the one it let pass is gone).
+     */
     void sideStep(String robot, Cell cell) {
+        aside.put(robot, cell);
         CancelMissionCommand cancel = new CancelMissionCommand();
         cancel.deviceId = robot;
         cancel.missionType = "goto";
@@ -137,7 +156,8 @@ public final class RobotFleet {
         }
         Optional<Errands.Errand> e = errands.lifted(robot, s.get().cell(), view.carts(), grid.get());
         if (e.isEmpty()) {
-            LOG.log(System.Logger.Level.WARNING, "{0}: no free storage cell can be reached with a cart; it waits", robot);
+            LOG.log(System.Logger.Level.WARNING, "{0}: no free storage cell can be reached with a cart; it waits",
+                    robot);
             return;
         }
         sentGoal.remove(robot);
