@@ -95,40 +95,38 @@ class WarehouseScenarioTest {
     }
 
     @Test
-    void collisionIsResolvedByTheRendezvousOfThreeRobotsWithTheOrchestrator() {
+    void aCollisionIsResolvedWithTheRobotsThatReportItWithoutWaitingForTheOthers() {
         for (String r : List.of("Robot1", "Robot2", "Robot3")) {
             status(UNLOAD_LOCATION, r, IN_UNLOAD, 0);
             assertThat(robots.placesOf(r)).containsExactly("UNLOAD");
         }
+        // Robot1 alone reports a robot in front: the orchestrator takes part with it (define p4 (p1' p2' p3'))
         status(OBSTACLE, "Robot1", IN_UNLOAD, IS_OBSTACLE);
-        status(OBSTACLE, "Robot2", IN_UNLOAD, IS_OBSTACLE);
-        // two robots are ready: the rendezvous waits for the third
-        assertThat(robots.placesOf("Robot1")).containsExactly("OBSTACLE");
-        assertThat(bus.published(ConnectorResolveCollisionOffer.class)).extracting(o -> o.component)
-                .containsExactly("Robot1", "Robot2");
-        assertThat(bus.published(ConnectorResolveCollision.class)).isEmpty();
-        assertThat(orchestrator.placesOf("Orchestrator1")).containsExactly("START");
-
-        status(OBSTACLE, "Robot3", IN_UNLOAD, IS_OBSTACLE);
-
         List<ConnectorResolveCollision> fired = bus.published(ConnectorResolveCollision.class);
         assertThat(fired).hasSize(1);
         ConnectorResolveCollision rdv = fired.get(0);
         assertThat(rdv.connector).isEqualTo("Connector2");
-        assertThat(rdv.participants).containsExactly("p1", "p2", "p3", "p4");
-        // Listing 7's down: the orchestrator receives the three positions
-        assertThat(List.of(rdv.p4Position1, rdv.p4Position2, rdv.p4Position3)).containsOnly((double) IN_UNLOAD);
-        ConnectorCollisionResolved resolved = bus.published(ConnectorCollisionResolved.class).get(0);
-        assertThat(List.of(resolved.p1Position, resolved.p2Position, resolved.p3Position))
-                .containsExactly((double) IN_UNLOAD, 1.0, 1.0);
+        assertThat(rdv.participants).containsExactlyInAnyOrder("p1", "p4");
+        // its down: the orchestrator receives Robot1's position, 0 (not concerned) for the others
+        assertThat(List.of(rdv.p4Position1, rdv.p4Position2, rdv.p4Position3))
+                .containsExactly((double) IN_UNLOAD, 0.0, 0.0);
+        // the resolution is broadcast by the orchestrator; the robot waiting in ROBOT joins
+        assertThat(bus.published(ConnectorCollisionResolved.class)).hasSize(1);
+        assertThat(robots.placesOf("Robot1")).containsExactly("START");
+        // without an edge the rule keeps the robot's position: it goes on once the way is clear
+        assertThat(robots.dataOf("Robot1")).containsEntry("position", (double) IN_UNLOAD).containsEntry("detect", 0);
+        assertThat(robots.placesOf("Robot2")).containsExactly("UNLOAD");
+        assertThat(orchestrator.placesOf("Orchestrator1")).containsExactly("START");
+
+        // two more, one after the other: each resolved at once
+        status(OBSTACLE, "Robot2", IN_UNLOAD, IS_OBSTACLE);
+        status(OBSTACLE, "Robot3", IN_UNLOAD, IS_OBSTACLE);
+        assertThat(bus.published(ConnectorResolveCollision.class)).hasSize(3).extracting(r -> r.participants)
+                .containsExactly(List.of("p1", "p4"), List.of("p2", "p4"), List.of("p3", "p4"));
         for (String r : List.of("Robot1", "Robot2", "Robot3")) {
             assertThat(robots.placesOf(r)).as(r).containsExactly("START");
-            assertThat(robots.dataOf(r)).containsEntry("detect", 0);
         }
-        assertThat(robots.dataOf("Robot1")).containsEntry("position", (double) IN_UNLOAD);
-        assertThat(robots.dataOf("Robot2")).containsEntry("position", 1.0);
-        assertThat(orchestrator.placesOf("Orchestrator1")).containsExactly("START");
-        assertThat(orchestrator.dataOf("Orchestrator1")).containsEntry("collisions", 1);
+        assertThat(orchestrator.dataOf("Orchestrator1")).containsEntry("collisions", 3);
     }
 
     @Test
@@ -170,7 +168,7 @@ class WarehouseScenarioTest {
         toDocking.component = "Robot2";
         toDocking.position = 1;
         bus.publish(toDocking);
-        // carts are left: the robot goes round again
+        // carts are left: the robot goes round again (placing the cart in storage ended its carrying)
         assertThat(robots.placesOf("Robot2")).containsExactly("START");
         assertThat(robots.dataOf("Robot2")).containsEntry("carrying", false);
     }

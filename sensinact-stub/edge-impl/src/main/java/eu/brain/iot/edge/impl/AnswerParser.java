@@ -80,6 +80,32 @@ final class AnswerParser {
     record Inventory(List<String> robots, List<String> doors) {
     }
 
+    /** The fleet's world ({@code GET /world}): its map and carts (robots and doors are polled on their own). */
+    WorldAnswer world(byte[] body) throws DeviceIOException {
+        Fields f = new Fields("the fleet's world", tree("the fleet's world", body));
+        JsonNode rows = f.node.get("map");
+        if (rows == null || !rows.isArray()) {
+            throw new DeviceIOException("answer of the fleet's world: 'map' must be a list of rows");
+        }
+        StringBuilder grid = new StringBuilder();
+        for (JsonNode row : rows) {
+            grid.append(grid.length() == 0 ? "" : "\n").append(row.asText());
+        }
+        String name = f.optionalText("name");
+        WorldAnswer.Map map = new WorldAnswer.Map(WorldAnswer.WAREHOUSE, name == null ? "" : name, f.integer("width"),
+                f.integer("height"), grid.toString());
+        JsonNode carts = f.node.get("carts");
+        if (carts == null || !carts.isArray()) {
+            throw new DeviceIOException("answer of the fleet's world: 'carts' must be a list");
+        }
+        List<WorldAnswer.Cart> list = new ArrayList<>();
+        for (JsonNode c : carts) {
+            Fields cf = new Fields("the fleet's world, a cart", c);
+            list.add(new WorldAnswer.Cart(cf.text("id"), cf.integer("x"), cf.integer("y"), cf.optionalText("carriedBy")));
+        }
+        return new WorldAnswer(map, list);
+    }
+
     /** The id of the mission in a command's answer ({@code {"mission":{"id":N,...}}}), or {@code null}. */
     Long missionId(byte[] body) {
         try {

@@ -3,10 +3,11 @@ package eu.brain.iot.edge.impl;
 import java.util.List;
 
 /**
- * A device's answer to a poll, checked by {@link AnswerParser}: a robot's or a door's. Each kind says which
+ * A device's answer to a poll, checked by {@link AnswerParser}: a robot's or a door's; or a cart or the map read from
+ * the fleet's world ({@link WorldAnswer}). Each kind says which
  * resources of the device model it sets, so the {@link DeviceStore} needs to know no kind of device.
  */
-sealed interface DeviceAnswer permits RobotAnswer, DoorAnswer {
+sealed interface DeviceAnswer permits RobotAnswer, DoorAnswer, WorldAnswer.Cart, WorldAnswer.Map {
 
     /** The device's id. */
     String id();

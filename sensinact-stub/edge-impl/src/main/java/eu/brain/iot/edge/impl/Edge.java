@@ -19,7 +19,7 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
  * The edge without a framework, put together: one fleet thread; the {@link FleetApi} (the fleet's REST API)
  * shared by polling, mission tracking and commands; the {@link DeviceStore} where every change happens; the
  * {@link EdgeEvents} derived from its changes and the {@link Outbox} they leave by; the {@link FleetPoller}, which
- * only schedules polls. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
+ * only schedules polls; the {@link WorldReader}, which reads the carts and the map from the fleet's world. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
  * then resource listeners (SSE) and edge events (bus). The DS component wraps it; tests and the benchmark use it
  * directly.
  */
@@ -29,6 +29,7 @@ final class Edge implements DeviceModel, AutoCloseable {
     private final Outbox outbox;
     private final DeviceStore store;
     private final FleetPoller poller;
+    private final WorldReader world;
     private final CommandRunner commands;
 
     Edge(FleetSettings settings, EventSink events, EdgeLog log) {
@@ -38,11 +39,14 @@ final class Edge implements DeviceModel, AutoCloseable {
         this.poller = new FleetPoller(fleet, api, store, outbox, log);
         this.commands = new CommandRunner(api, store, event -> fleet.run(() -> outbox.publish(event),
                 "publishing " + event.getClass().getSimpleName(), log));
+        this.world = new WorldReader(fleet, api, store, log);
         poller.configure(settings);
+        world.configure(settings);
     }
 
     void configure(FleetSettings settings) {
         poller.configure(settings);
+        world.configure(settings);
     }
 
     FleetSettings settings() {

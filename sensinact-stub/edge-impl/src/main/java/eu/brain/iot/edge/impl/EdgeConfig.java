@@ -37,4 +37,8 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     @AttributeDefinition(description = "Longest time between two polls of an unreachable device (milliseconds)")
     long backoff_max_ms() default 8_000;
+
+    @AttributeDefinition(description = "Time between two reads of the fleet's world (GET /world: where the carts "
+            + "stand, the map), as providers cart1.. and warehouse (milliseconds; 0: never)")
+    long world_period_ms() default 2_000;
 }

@@ -73,6 +73,21 @@ final class FleetApi implements AutoCloseable {
         });
     }
 
+    /** The fleet's world ({@code GET /world}: map and carts); fails with a message saying what went wrong. */
+    CompletableFuture<WorldAnswer> world() {
+        Link l = link;
+        return l.client().get(l.settings().baseUrl().resolve("world")).thenApply(answer -> {
+            try {
+                if (!answer.ok()) {
+                    throw new DeviceIOException("HTTP " + answer.status() + ": " + parser.errorText(answer));
+                }
+                return parser.world(answer.body());
+            } catch (DeviceIOException e) {
+                throw new java.util.concurrent.CompletionException(e);
+            }
+        });
+    }
+
     /**
      * Poll one device; {@code done} gets the result on an HTTP thread, whatever happened (one callback, no future:
      * this is the hot path, 20,000 times a second for 10,000 robots).

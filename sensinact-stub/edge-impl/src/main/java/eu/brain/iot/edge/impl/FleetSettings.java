@@ -16,9 +16,10 @@ import java.util.List;
  * @param ioThreads        HTTP client threads
  * @param unreachableAfter failed polls in a row before a device is reported unreachable
  * @param backoffMaxMillis longest time between polls of an unreachable device
+ * @param worldPeriodMillis time between two reads of the fleet's world ({@code GET /world}: carts and map), 0: never
  */
 record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long periodMillis, long timeoutMillis,
-        int maxConnections, int ioThreads, int unreachableAfter, long backoffMaxMillis) {
+        int maxConnections, int ioThreads, int unreachableAfter, long backoffMaxMillis, long worldPeriodMillis) {
 
     FleetSettings {
         robots = List.copyOf(robots);
@@ -36,8 +37,23 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
     }
 
     static FleetSettings from(EdgeConfig c) {
-        return of(c.fleet_url(), List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
-                c.max_connections(), c.io_threads(), c.unreachable_after_failures(), c.backoff_max_ms());
+        FleetSettings s = of(c.fleet_url(), List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(),
+                c.request_timeout_ms(), c.max_connections(), c.io_threads(), c.unreachable_after_failures(),
+                c.backoff_max_ms());
+        return s.withWorldPeriod(c.world_period_ms());
+    }
+
+    /**
+     * The same settings reading the fleet's world every {@code millis} (0: never).
+     *
+     * @throws IllegalArgumentException when it is negative
+     */
+    FleetSettings withWorldPeriod(long millis) {
+        if (millis < 0) {
+            throw new IllegalArgumentException("world.period.ms must be 0 (never) or positive, found " + millis);
+        }
+        return new FleetSettings(baseUrl, robots, doors, periodMillis, timeoutMillis, maxConnections, ioThreads,
+                unreachableAfter, backoffMaxMillis, millis);
     }
 
     /** @throws IllegalArgumentException naming the configuration property at fault */
@@ -54,7 +70,7 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
                     + ") must be at least poll.period.ms (" + periodMillis + ")");
         }
         return new FleetSettings(base, ids("robots", robots), ids("doors", doors), periodMillis, timeoutMillis,
-                maxConnections, ioThreads, unreachableAfter, backoffMaxMillis);
+                maxConnections, ioThreads, unreachableAfter, backoffMaxMillis, 0);
     }
 
     private static URI baseUrl(String url) {

@@ -97,7 +97,10 @@ final class EdgeTestSupport implements AutoCloseable {
         try {
             EdgeTestSupport edge = new EdgeTestSupport(sim, awaitRest(context), cm, context);
             Instant configuredAt = Instant.now();
-            edge.edgeProperties.putAll(Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", 100L));
+            // world.period.ms 0: these tests count robots and doors; the carts and map read from the world are
+            // WorldReaderTest's (edge core) and the warehouse itests' subject
+            edge.edgeProperties.putAll(Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", 100L,
+                    "world.period.ms", 0L));
             edge.configureEdge(settings);
             edge.awaitProvidersOk(model, configuredAt);
             return edge;

@@ -1,31 +1,46 @@
 package eu.brain.iot.behaviours.orchestrator.impl;
 
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 
 import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorExterns;
 
 /**
- * The orchestrator model's collision resolution (the paper's resolvedPosition1..3, "AI algorithms" there): a fixed,
- * deterministic rule: robot 1 keeps its position and goes first, robots 2 and 3 fall back to the docking area
- * (area code 1) to clear the way. Stateless.
+ * The orchestrator model's collision resolution: resolvedPositionK for the model's RobotK (the fleet's robotK of
+ * group g1), by the rule of {@link CollisionGeometry}. A position 0 is a robot not in the interaction (the subset
+ * rendezvous of Warehouse.bip): it stays 0. Without an edge (the model on a bus alone) every robot concerned keeps
+ * its position (waits, then goes on). Thread-safe: the geometry reference is volatile, the geometry thread-safe.
  */
 @Component(service = OrchestratorBehaviorExterns.class)
 public class OrchestratorExterns implements OrchestratorBehaviorExterns {
 
-    static final double IN_DOCKING = 1;
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    volatile CollisionGeometry geometry;
+
+    private double resolve(int k, double position) {
+        CollisionGeometry g = geometry;
+        if (position == 0 || g == null) {
+            return position;
+        }
+        return g.resolve("robot" + k, position);
+    }
 
     @Override
     public double resolvedPosition1(double position1) {
-        return position1;
+        return resolve(1, position1);
     }
 
     @Override
     public double resolvedPosition2(double position2) {
-        return IN_DOCKING;
+        return resolve(2, position2);
     }
 
     @Override
     public double resolvedPosition3(double position3) {
-        return IN_DOCKING;
+        return resolve(3, position3);
     }
 }

@@ -9,8 +9,9 @@ import eu.brain.iot.bip.smc.runtime.TraceRandom;
 
 /**
  * Simulation of the extern functions of {@code behaviours/orchestrator/src/main/bip/Orchestrator.bip}: the deployed
- * resolution rule itself ({@link OrchestratorExterns}: robot 1 keeps its position, robots 2 and 3 fall back to the
- * docking area), since it is a pure function. The cells robots take after a resolution are the environment's.
+ * resolution rule without an edge ({@link OrchestratorExterns} with no device model: every robot concerned keeps its
+ * position, and 0, not concerned, stays 0), a pure function. Which cell a robot steps aside to is the deployed
+ * geometry's on a node (it reads the edge's device model); here the cells robots take are the environment's.
  */
 public final class OrchestratorSimulation implements SimulationExterns {
 

@@ -11,13 +11,13 @@ import eu.brain.iot.bip.smc.runtime.TraceRandom;
  * checking. The robot's body is the environment model ({@code Motion} in WarehouseEnvironment.bip), so what the
  * deployed {@code RobotExterns} sends to the fleet is not repeated here: {@code getPosition} answers where every robot
  * starts (docked, as {@code RobotExterns} answers before any move), {@code liftCart} counts down like the deployed one
- * (without its log line, which thousands of traces would flood), {@code moveTo} is the environment's business.
+ * (without its log line, which thousands of traces would flood), {@code moveTo} and {@code placeCart} are the environment's business.
  * No state: the same answer for every trace.
  */
 public final class RobotSimulation implements SimulationExterns {
 
     /** The extern functions of Robot.bip this class simulates. */
-    public static final Set<String> FUNCTIONS = Set.of("getPosition", "liftCart", "moveTo");
+    public static final Set<String> FUNCTIONS = Set.of("getPosition", "liftCart", "moveTo", "placeCart");
 
     static final double IN_DOCKING = 1;
 
@@ -26,7 +26,7 @@ public final class RobotSimulation implements SimulationExterns {
         return switch (name) {
             case "getPosition" -> IN_DOCKING;
             case "liftCart" -> Math.max(0, (Integer) args[1] - 1);
-            case "moveTo" -> null;
+            case "moveTo", "placeCart" -> null;
             default -> throw WarehouseSimulation.unknown(name, paramTypes, getClass());
         };
     }

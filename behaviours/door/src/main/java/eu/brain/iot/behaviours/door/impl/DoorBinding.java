@@ -1,0 +1,127 @@
+package eu.brain.iot.behaviours.door.impl;
+
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+
+import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
+import eu.brain.iot.behaviours.events.DoorBehaviorClosed;
+import eu.brain.iot.behaviours.warehouse.BindingThread;
+import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.DoorStateChanged;
+import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+
+/**
+ * The binding of the door model to the edge, declared here and nowhere else:
+ *
+ * <pre>
+ * place  condition (edge)                                                   port event / command
+ * OPEN   DoorStateChanged to closed (or the door is closed when looked at)  closed (DoorBehaviorClosed)
+ * any    an open door with no robot within near.cells of it for             CloseDoorCommand
+ *        close.after.polls looks in a row
+ * </pre>
+ *
+ * Who closes the door: this binding, once no robot is near it for a while (3 s of warehouse time by default), so
+ * a door stays open while robots come and go through it (every trip crosses the door: closing it between two
+ * robots close behind each other would cost each an opening, 2 s) and is closed when the traffic stops. The model's
+ * {@code closed} port follows the door's real state. The opening is the model's {@code open} extern
+ * ({@link DoorExterns}). {@code DoorStateChanged} is this bundle's trigger: no other behaviour consumes it, so the
+ * first door state the edge announces has the door behaviour installed on a bare node.
+ * <p>
+ * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
+ * components with a service until someone gets it).
+ * <p>
+ * Threads: {@link #notify} hands every event to the binding's own thread, which owns the state and publishes.
+ */
+@Component(service = SmartBehaviour.class, configurationPid = DoorConfig.PID, immediate = true)
+@SmartBehaviourDefinition(consumed = { DoorStateChanged.class, CommandOutcome.class }, author = "BRAIN-IoT fabric",
+        name = "Door binding", description = "Binds the door model's ports to the edge's door events")
+public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
+
+    private static final System.Logger LOG = System.getLogger(DoorBinding.class.getName());
+
+    private final DoorControl control;
+    private final EventBus bus;
+    private final DoorBehaviorBehaviour model;
+    private final int closeAfter;
+    private final int near;
+    private final BindingThread thread;
+
+    // binding thread only
+    private final Map<String, Integer> quietLooks = new HashMap<>();
+
+    @Activate
+    public DoorBinding(@Reference DoorControl control, @Reference EventBus bus,
+            @Reference(target = "(component.name=eu.brain.iot.behaviours.door.DoorBehaviorBehaviour)")
+            SmartBehaviour<?> model, DoorConfig config) {
+        this.control = control;
+        this.bus = bus;
+        this.model = (DoorBehaviorBehaviour) model;
+        this.closeAfter = Math.max(1, config.close_after_polls());
+        this.near = Math.max(1, config.near_cells());
+        this.thread = new BindingThread("door-binding", config.speed(), config.poll_period_ms());
+        thread.start(this::look);
+    }
+
+    @Deactivate
+    void deactivate() {
+        thread.close();
+    }
+
+    @Override
+    public void notify(BrainIoTEvent event) {
+        thread.execute(() -> {
+            if (event instanceof CommandOutcome o) {
+                control.outcome(o);
+            } else if (event instanceof DoorStateChanged d) {
+                LOG.log(System.Logger.Level.DEBUG, "{0} is {1}", d.doorId, d.state);
+                closedWhenOpenInModel("closed".equals(d.state));
+            }
+        });
+    }
+
+    /** The model's door is OPEN and the real door closed: the model follows ({@code closed}). */
+    private void closedWhenOpenInModel(boolean closed) {
+        List<String> places = model.placesOf("DoorInstance");
+        if (closed && places != null && places.contains("OPEN")) {
+            DoorBehaviorClosed e = new DoorBehaviorClosed();
+            e.component = "DoorInstance";
+            bus.deliver(e);
+        }
+    }
+
+    private void look() {
+        try {
+            List<DoorState> doors = control.view().doors();
+            List<RobotState> robots = control.view().robots();
+            boolean allClosed = !doors.isEmpty();
+            for (DoorState d : doors) {
+                allClosed &= "closed".equals(d.state());
+                if (!"open".equals(d.state())) {
+                    quietLooks.remove(d.id());
+                    continue;
+                }
+                boolean someoneNear = robots.stream().anyMatch(r -> r.cell().distance(d.cell()) <= near
+                        || r.detect() == 2 && r.ahead().equals(d.cell()));
+                int quiet = someoneNear ? 0 : quietLooks.getOrDefault(d.id(), 0) + 1;
+                quietLooks.put(d.id(), quiet);
+                if (quiet == closeAfter) {
+                    control.close(d.id(), "no robot near it for " + quiet + " polls");
+                }
+            }
+            closedWhenOpenInModel(allClosed);
+        } catch (RuntimeException e) {
+            LOG.log(System.Logger.Level.WARNING, "door binding: a look at the doors failed", e);
+        }
+    }
+}

@@ -1,0 +1,172 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.FleetView.CartState;
+import eu.brain.iot.behaviours.warehouse.Grid;
+
+/**
+ * The errands of every robot and the claim table that keeps two robots from going for the same cart. One table is
+ * enough because every robot instance of the model lives in one behaviour component (the generated
+ * {@code RobotBehaviorBehaviour} hosts Robot1..3), whose extern functions this bundle registers once.
+ * <p>
+ * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
+ * outside storage that is nearest by path; when it lifts it, it is given the nearest free storage cell that a robot
+ * carrying a cart can reach around the other carts and whose cart will not wall in another free storage cell; after
+ * placing it, it heads for its dock (the docking cell where it was first seen).
+ * <p>
+ * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
+ * another lock while holding its own).
+ */
+final class Errands {
+
+    /** What a robot is doing now. */
+    enum Leg { NONE, TO_CART, TO_STORAGE, TO_DOCK }
+
+    /** One robot's errand, a copy (the table keeps its own). */
+    record Errand(String robot, Leg leg, String cart, Cell cartCell, Cell drop, Cell dock) {
+        /** @return where the errand goes next, or {@code null} when it has none */
+        Cell goal() {
+            return switch (leg) {
+                case TO_CART -> cartCell;
+                case TO_STORAGE -> drop;
+                case TO_DOCK -> dock;
+                case NONE -> null;
+            };
+        }
+    }
+
+    private final Map<String, Errand> errands = new HashMap<>();
+    private final Map<String, Cell> docks = new HashMap<>();
+    /** Storage cells given to a cart being carried there. */
+    private final Set<Cell> drops = new HashSet<>();
+    private int delivered;
+
+    /** The robot was seen here; the first docking cell it is seen on is its dock. */
+    synchronized void seen(String robot, Cell cell, boolean docking) {
+        if (docking) {
+            docks.putIfAbsent(robot, cell);
+        }
+    }
+
+    synchronized Errand of(String robot) {
+        return errands.getOrDefault(robot, new Errand(robot, Leg.NONE, null, null, null, docks.get(robot)));
+    }
+
+    /** @return whether some cart on the floor outside storage is claimed by nobody */
+    synchronized boolean workLeft(List<CartState> carts, Grid grid) {
+        return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));
+    }
+
+    /** Claims the nearest waiting cart for a robot without an errand. */
+    synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
+        CartState best = null;
+        int bestSteps = Integer.MAX_VALUE;
+        for (CartState c : carts) {
+            if (!waiting(c, grid) || claimed(c.id())) {
+                continue;
+            }
+            int steps = grid.steps(at, c.cell(), Set.of());
+            if (steps < bestSteps) {
+                best = c;
+                bestSteps = steps;
+            }
+        }
+        if (best == null) {
+            return Optional.empty();
+        }
+        Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
+        errands.put(robot, e);
+        return Optional.of(e);
+    }
+
+    /** The robot lifted its cart: it is given a storage cell, or none when no free one can be reached. */
+    synchronized Optional<Errand> lifted(String robot, Cell at, List<CartState> carts, Grid grid) {
+        Errand e = of(robot);
+        Set<Cell> floor = new HashSet<>();
+        carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> floor.add(c.cell()));
+        floor.remove(at); // the cart it lifts
+        Cell best = null;
+        int bestSteps = Integer.MAX_VALUE;
+        for (Cell c : grid.cells(Grid.STORAGE)) {
+            if (drops.contains(c) || floor.contains(c) || !leavesRoom(c, floor, grid)) {
+                continue;
+            }
+            int steps = grid.steps(at, c, floor);
+            if (steps < bestSteps) {
+                best = c;
+                bestSteps = steps;
+            }
+        }
+        if (best == null) {
+            errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), null, e.dock()));
+            return Optional.empty(); // asked again when the robot goes on (a placed cart may free the way)
+        }
+        drops.add(best);
+        Errand next = new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), best, e.dock());
+        errands.put(robot, next);
+        return Optional.of(next);
+    }
+
+    /** The robot put its cart down in storage: it heads home. */
+    synchronized Errand placed(String robot) {
+        Errand e = of(robot);
+        delivered++;
+        Errand next = new Errand(robot, Leg.TO_DOCK, null, null, null, e.dock());
+        errands.put(robot, next);
+        return next;
+    }
+
+    /** The robot is back at its dock: no errand. */
+    synchronized void docked(String robot) {
+        errands.remove(robot);
+    }
+
+    /** The robot gives its cart back to the table (it cannot fetch it); another robot may claim it. */
+    synchronized void release(String robot) {
+        Errand e = errands.remove(robot);
+        if (e != null && e.drop() != null) {
+            drops.remove(e.drop());
+        }
+    }
+
+    /**
+     * A cart at {@code c} must not cut a storage cell off from the rest of the warehouse for robots carrying carts:
+     * every free passable neighbour of {@code c} keeps a way out that avoids carts (and {@code c}).
+     */
+    private boolean leavesRoom(Cell c, Set<Cell> floor, Grid grid) {
+        Set<Cell> blocked = new HashSet<>(floor);
+        blocked.add(c);
+        Set<Cell> mustReachOut = new HashSet<>(drops); // the cells other robots are carrying carts to
+        for (Cell n : grid.neighbours(c)) {
+            if (!blocked.contains(n) && grid.area(n) == Grid.STORAGE) {
+                mustReachOut.add(n);
+            }
+        }
+        for (Cell n : mustReachOut) {
+            if (grid.nearest(n, x -> grid.area(x) != Grid.STORAGE, blocked) == null) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    synchronized int delivered() {
+        return delivered;
+    }
+
+    private boolean claimed(String cart) {
+        return errands.values().stream().anyMatch(e -> cart.equals(e.cart()));
+    }
+
+    /** A cart on the floor and not in storage waits for a robot. */
+    private static boolean waiting(CartState c, Grid grid) {
+        return c.carriedBy() == null && grid.area(c.cell()) != Grid.STORAGE;
+    }
+}

@@ -1,0 +1,323 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.Set;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+
+import eu.brain.iot.behaviours.events.RobotBehaviorFromUnloadObstacle;
+import eu.brain.iot.behaviours.events.RobotBehaviorStorageToDocking;
+import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
+import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
+import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
+import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.warehouse.BindingThread;
+import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
+import eu.brain.iot.behaviours.warehouse.RobotNames;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.DeviceRecovered;
+import eu.brain.iot.edge.api.DeviceUnreachable;
+import eu.brain.iot.edge.api.MissionFailed;
+import eu.brain.iot.edge.api.MissionFinished;
+import eu.brain.iot.edge.api.ObstacleCleared;
+import eu.brain.iot.edge.api.ObstacleDetected;
+import eu.brain.iot.edge.api.RobotPositionChanged;
+import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+
+/**
+ * The binding of the robot model to the edge, declared here and nowhere else: it consumes the edge's robot events
+ * and publishes the model's port events, by these rules (P is the robot's place in the model, s what the edge's
+ * device model shows of it, e its errand; every poll period, and at once on an edge event about the robot):
+ *
+ * <pre>
+ * P        condition (edge)                                               port event             data
+ * START    s.detect != door, or the door ahead is closed; e has a goal    unloadLocation         area(s), 0
+ *          or a cart waits for a robot
+ * UNLOAD   s moved to another cell                                        unloadToUnload         area(s), 0
+ * UNLOAD   s stopped in front of a closed door (detect 2)                 fromUnloadObstacle     area(s), isDoor
+ * UNLOAD   s stopped behind a robot (detect 1) for patience polls         fromUnloadObstacle     area(s), isObstacle
+ * STORAGE    (the same, on its way home)
+ * UNLOAD   e goes for a cart, s stands on it, idle, carries none          fromUnloadObstacle     area(s), inFrontOfCart
+ * UNLOAD   e carries to storage, s stands on its storage cell, idle       unloadToStorage        inStorage, 0
+ * STORAGE  e goes home, s stands on its dock, idle                        storageToDocking       inDocking, 0
+ * UNLOAD     (the same, when it went home through a resolved collision)
+ * UNLOAD   idle before its errand's goal, or without one while a cart     (none: RobotFleet.resume sends the go-to)
+ *          waits (a go-to cancelled, lost or never sent)
+ * </pre>
+ *
+ * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
+ * ({@link RobotNames}); until the behaviours host one compound per group, robots beyond robot3 are not driven.
+ * Command outcomes go to {@link RobotFleet#outcome}; mission ends clear its pending go-tos. A robot the edge cannot
+ * reach gets no event until it answers again, then goes on where it was.
+ * <p>
+ * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
+ * components with a service until someone gets it).
+ * <p>
+ * Threads: {@link #notify} (the bus's delivery thread) hands every event to the binding's own thread, which owns
+ * all of this class's state and is the only one that evaluates the rules and publishes.
+ */
+@Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID, immediate = true)
+@SmartBehaviourDefinition(consumed = { RobotPositionChanged.class, ObstacleDetected.class, ObstacleCleared.class,
+        MissionFinished.class, MissionFailed.class, CommandOutcome.class, DeviceUnreachable.class,
+        DeviceRecovered.class }, author = "BRAIN-IoT fabric", name = "Robot binding",
+        description = "Binds the robot model's ports to the edge's robot events")
+public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
+
+    private static final System.Logger LOG = System.getLogger(RobotBinding.class.getName());
+    static final int IS_OBSTACLE = 4;
+    static final int IS_DOOR = 5;
+    static final int IN_FRONT_OF_CART = 6;
+
+    private final RobotFleet fleet;
+    private final EventBus bus;
+    private final RobotBehaviorBehaviour model;
+    private final long patienceNanos;
+    private final BindingThread thread;
+
+    // binding thread only
+    private final Map<String, Long> blockedSince = new HashMap<>();
+    private final Set<String> moved = new HashSet<>();
+    private final Set<String> notDriven = new HashSet<>();
+    /** Per robot: the model's state when the binding last published for it, and when. */
+    private final Map<String, Published> published = new HashMap<>();
+    private final long pollNanos;
+
+    /** The model's state (places and data) of a robot when an event was published for it. */
+    private record Published(List<String> places, Map<String, Object> data, long atNanos) {
+    }
+
+    @Activate
+    public RobotBinding(@Reference RobotFleet fleet, @Reference EventBus bus,
+            @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour)")
+            SmartBehaviour<?> model, RobotConfig config) {
+        this.fleet = fleet;
+        this.bus = bus;
+        this.model = (RobotBehaviorBehaviour) model;
+        this.thread = new BindingThread("robot-binding", config.speed(), config.poll_period_ms());
+        this.pollNanos = thread.periodNanos();
+        this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
+        thread.start(this::safeTick);
+        LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
+                pollNanos / 1e6, patienceNanos / 1e6);
+    }
+
+    @Deactivate
+    void deactivate() {
+        thread.close();
+    }
+
+    @Override
+    public void notify(BrainIoTEvent event) {
+        thread.execute(() -> {
+            try {
+                take(event);
+            } catch (RuntimeException e) {
+                LOG.log(System.Logger.Level.WARNING, "robot binding: " + event.getClass().getSimpleName()
+                        + " not handled", e);
+            }
+        });
+    }
+
+    private void take(BrainIoTEvent event) {
+        if (event instanceof CommandOutcome o) {
+            fleet.outcome(o);
+        } else if (event instanceof MissionFinished m) {
+            fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
+            evaluate(m.robotId);
+        } else if (event instanceof MissionFailed m) {
+            fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
+            if (!"cancelled".equals(m.reason)) {
+                LOG.log(System.Logger.Level.WARNING, "{0}: {1} mission failed ({2}); it goes on with its errand",
+                        m.robotId, m.missionType, m.reason);
+                fleet.resume(m.robotId, "after a failed " + m.missionType);
+            }
+            evaluate(m.robotId);
+        } else if (event instanceof RobotPositionChanged p) {
+            moved.add(p.robotId);
+            evaluate(p.robotId);
+        } else if (event instanceof ObstacleDetected o) {
+            evaluate(o.robotId);
+        } else if (event instanceof ObstacleCleared o) {
+            blockedSince.remove(o.robotId);
+            evaluate(o.robotId);
+        } else if (event instanceof DeviceUnreachable u) {
+            LOG.log(System.Logger.Level.WARNING, "{0} is unreachable ({1}): its errand waits", u.deviceId, u.reason);
+        } else if (event instanceof DeviceRecovered r && "robot".equals(r.deviceKind)) {
+            LOG.log(System.Logger.Level.INFO, "{0} answers again after {1} ms: it goes on with its errand",
+                    r.deviceId, r.downMillis);
+            evaluate(r.deviceId);
+        }
+    }
+
+    private void safeTick() {
+        try {
+            for (RobotState s : fleet.view().robots()) {
+                evaluate(s.id());
+            }
+        } catch (RuntimeException e) {
+            LOG.log(System.Logger.Level.WARNING, "robot binding: a look at the robots failed", e);
+        }
+    }
+
+    /** Applies the rules of the table above to one robot. */
+    private void evaluate(String robot) {
+        int k = RobotNames.number(robot);
+        if (k < 1 || k > RobotNames.PER_GROUP) {
+            if (notDriven.add(robot)) {
+                LOG.log(System.Logger.Level.WARNING, "{0} is not driven: the behaviour hosts Robot1..3 of group g1 "
+                        + "(robot1..3) only", robot);
+            }
+            return;
+        }
+        Optional<RobotState> state = fleet.view().robot(robot);
+        if (state.isEmpty() || !state.get().reachable()) {
+            return;
+        }
+        RobotState s = state.get();
+        String component = RobotNames.component(k);
+        List<String> places = model.placesOf(component);
+        if (places == null || places.size() != 1) {
+            return;
+        }
+        fleet.errands().seen(robot, s.cell(), s.area() == 1);
+        Errands.Errand e = fleet.errands().of(robot);
+        long now = System.nanoTime();
+        Map<String, Object> data = model.dataOf(component);
+        Published last = published.get(robot);
+        if (last != null && last.places().equals(places) && last.data().equals(data)
+                && now - last.atNanos() < 4 * pollNanos) {
+            return; // the model has not taken the last event yet: never the same event twice
+        }
+        if (s.detect() == 1 && !s.running()) {
+            blockedSince.putIfAbsent(robot, now);
+        } else {
+            blockedSince.remove(robot);
+        }
+        double area = Math.max(1, Math.min(3, s.area() == 0 || s.area() == 5 ? fleet.area(robot) : s.area()));
+        switch (places.get(0)) {
+            case "START" -> {
+                boolean waitsAtOpeningDoor = s.detect() == 2 && !doorAheadClosed(s);
+                if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
+                        || fleet.workLeft())) {
+                    unloadLocation(component, area);
+                }
+            }
+            case "UNLOAD" -> {
+                if (obstacle(robot, s, component, area, now)) {
+                    return;
+                }
+                if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle() && !s.carrying()) {
+                    fromUnloadObstacle(component, area, IN_FRONT_OF_CART);
+                } else if (e.leg() == Errands.Leg.TO_STORAGE && s.cell().equals(e.drop()) && s.idle()
+                        && s.carrying()) {
+                    unloadToStorage(component);
+                } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
+                    fleet.docked(robot);
+                    storageToDocking(component);
+                } else if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null && s.idle()) {
+                    fleet.resume(robot, "looking for a free storage cell"); // carrying, no storage cell yet
+                } else if (s.idle() && (e.goal() != null ? !s.cell().equals(e.goal()) : fleet.workLeft())) {
+                    // idle before its goal (a go-to cancelled, lost or refused, or never sent: the extern
+                    // functions ran while the fleet service was being replaced): it goes on; never sent twice
+                    fleet.resume(robot, "idle before its goal");
+                } else if (moved.remove(robot)) {
+                    unloadToUnload(component, area);
+                }
+            }
+            case "STORAGE" -> {
+                if (obstacle(robot, s, component, area, now)) {
+                    return;
+                }
+                if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
+                    fleet.docked(robot);
+                    storageToDocking(component);
+                }
+            }
+            default -> {
+                // OBSTACLE, DOOR, CART, ROBOT, DOCKING: the model's own transitions, the door or the orchestrator
+            }
+        }
+    }
+
+    /** A stop in front of a closed door, or behind a robot for longer than the patience: reported. */
+    private boolean obstacle(String robot, RobotState s, String component, double area, long now) {
+        if (s.detect() == 2 && doorAheadClosed(s)) {
+            fromUnloadObstacle(component, area, IS_DOOR);
+            return true;
+        }
+        Long since = blockedSince.get(robot);
+        if (since != null && now - since >= patienceNanos) {
+            blockedSince.remove(robot);
+            LOG.log(System.Logger.Level.INFO, "{0} has been stopped behind a robot for {1} ms: reported", robot,
+                    (now - since) / 1_000_000);
+            fromUnloadObstacle(component, area, IS_OBSTACLE);
+            return true;
+        }
+        return false;
+    }
+
+    private boolean doorAheadClosed(RobotState s) {
+        for (DoorState d : fleet.view().doors()) {
+            if (d.cell().equals(s.ahead())) {
+                return "closed".equals(d.state()) || "closing".equals(d.state());
+            }
+        }
+        return false;
+    }
+
+    // One method per port event: the generated events share no supertype with their data. Each remembers the
+    // model's state it was published in (see evaluate).
+
+    private void sent(BrainIoTEvent event, String component) {
+        String robot = "robot" + component.substring("Robot".length());
+        published.put(robot, new Published(model.placesOf(component), model.dataOf(component), System.nanoTime()));
+        bus.deliver(event);
+    }
+
+    private void unloadLocation(String component, double position) {
+        RobotBehaviorUnloadLocation e = new RobotBehaviorUnloadLocation();
+        e.component = component;
+        e.position = position;
+        sent(e, component);
+    }
+
+    private void unloadToUnload(String component, double position) {
+        RobotBehaviorUnloadToUnload e = new RobotBehaviorUnloadToUnload();
+        e.component = component;
+        e.position = position;
+        sent(e, component);
+    }
+
+    private void fromUnloadObstacle(String component, double position, int detect) {
+        RobotBehaviorFromUnloadObstacle e = new RobotBehaviorFromUnloadObstacle();
+        e.component = component;
+        e.position = position;
+        e.detect = detect;
+        sent(e, component);
+    }
+
+    private void unloadToStorage(String component) {
+        RobotBehaviorUnloadToStorage e = new RobotBehaviorUnloadToStorage();
+        e.component = component;
+        e.position = 3;
+        sent(e, component);
+    }
+
+    private void storageToDocking(String component) {
+        RobotBehaviorStorageToDocking e = new RobotBehaviorStorageToDocking();
+        e.component = component;
+        e.position = 1;
+        sent(e, component);
+    }
+}

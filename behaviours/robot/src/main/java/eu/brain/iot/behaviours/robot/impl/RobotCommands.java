@@ -1,0 +1,83 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.ArrayDeque;
+import java.util.HashMap;
+import java.util.Map;
+
+import eu.brain.iot.behaviours.warehouse.CommandLedger;
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.EdgeCommand;
+
+/**
+ * One robot's commands reach it in the order they were given: the next is published only when the edge has
+ * answered the one before (the edge performs commands concurrently, so a go-to sent after a pick could otherwise
+ * arrive first, and the robot would lift at the wrong cell). Per robot a queue; the outcome of its head releases
+ * the next. Thread-safe: the queues are guarded by this object's monitor, and the bus is never called while it is
+ * held (what to publish is chosen under the lock, published after).
+ */
+final class RobotCommands {
+
+    private static final System.Logger LOG = System.getLogger(RobotCommands.class.getName());
+
+    private record Waiting(EdgeCommand command, String why) {
+    }
+
+    private final CommandLedger ledger;
+    /** Per robot: the command sent and not answered yet (head), then those waiting for it. */
+    private final Map<String, ArrayDeque<Waiting>> queues = new HashMap<>();
+
+    RobotCommands(CommandLedger ledger) {
+        this.ledger = ledger;
+    }
+
+    /** Publishes the command now if the robot has none unanswered, else after those before it. */
+    void send(EdgeCommand command, String why) {
+        boolean now;
+        synchronized (this) {
+            ArrayDeque<Waiting> q = queues.computeIfAbsent(command.deviceId, k -> new ArrayDeque<>());
+            q.add(new Waiting(command, why));
+            now = q.size() == 1;
+        }
+        if (now) {
+            publish(command, why);
+        }
+    }
+
+    /**
+     * An outcome arrived: when it answers one of these commands, the robot's next command goes out.
+     *
+     * @return what it answered, or {@code null} when it is not one of these commands
+     */
+    CommandLedger.Sent answered(CommandOutcome o) {
+        CommandLedger.Sent sent = ledger.answered(o);
+        if (sent != null) {
+            next(sent.command().deviceId);
+        }
+        return sent;
+    }
+
+    private void next(String robot) {
+        Waiting next;
+        synchronized (this) {
+            ArrayDeque<Waiting> q = queues.get(robot);
+            if (q == null || q.isEmpty()) {
+                return;
+            }
+            q.poll();
+            next = q.peek();
+        }
+        if (next != null) {
+            publish(next.command(), next.why());
+        }
+    }
+
+    private void publish(EdgeCommand command, String why) {
+        try {
+            ledger.send(command, why);
+        } catch (RuntimeException e) {
+            LOG.log(System.Logger.Level.WARNING, "{0}: {1} not sent ({2}): {3}", command.deviceId,
+                    command.getClass().getSimpleName(), why, e.getMessage());
+            next(command.deviceId); // not sent: no outcome will come for it
+        }
+    }
+}

@@ -1,0 +1,28 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+/**
+ * Configuration of the robot behaviour's binding and extern functions (PID {@value #PID}, a component property
+ * type; every value optional). Times are warehouse time; {@code speed} says how much faster than wall-clock time
+ * the fleet runs (robot-sim's {@code --speed}), so that the binding looks at the robots once per poll of the
+ * warehouse, whatever the speed.
+ */
+public @interface RobotConfig {
+
+    /** The configuration PID, shared by {@link RobotBinding} and {@link RobotExterns}. */
+    String PID = "eu.brain.iot.behaviours.robot";
+
+    /** The fleet's speed factor: warehouse time runs this many times faster than wall-clock time. */
+    double speed() default 1.0;
+
+    /** Warehouse time between two looks at every robot (the edge's poll period at speed 1), in milliseconds. */
+    long poll_period_ms() default 500;
+
+    /**
+     * Polls a robot stays stopped behind another robot before the binding reports it (a robot-in-front,
+     * {@code fromUnloadObstacle} with {@code isObstacle}): 10 polls = 5 s, as the requirements gate's environment.
+     */
+    int patience_polls() default 10;
+
+    /** How often a refused command is sent again before the errand is planned anew. */
+    int command_retries() default 3;
+}

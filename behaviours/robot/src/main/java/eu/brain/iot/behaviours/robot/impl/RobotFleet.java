@@ -1,0 +1,278 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Reference;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.CommandLedger;
+import eu.brain.iot.behaviours.warehouse.FleetView;
+import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+import eu.brain.iot.edge.api.CancelMissionCommand;
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.EdgeCommand;
+import eu.brain.iot.edge.api.GoToCommand;
+import eu.brain.iot.edge.api.PickCartCommand;
+import eu.brain.iot.edge.api.PlaceCartCommand;
+import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.eventing.api.EventBus;
+
+/**
+ * What the robot model's extern functions do to the fleet, and the only place that sends robots commands: each
+ * command is an edge command event on the bus with a commandId ({@link CommandLedger}), one robot's commands in
+ * the order given ({@link RobotCommands}: the next once the edge answered the one before), and each outcome is
+ * checked ({@link #outcome}): a refusal is logged with the robot and the reason, counted, sent again up to
+ * {@code command.retries} times, then the errand is planned anew (the cart goes back to the claim table). Where
+ * the errands go is the {@link Errands} table's; where the robots and carts are, the edge's device model's.
+ * <p>
+ * Thread-safe: called by the extern functions (on the bus's delivery thread of the robot behaviour) and by the
+ * binding's thread; its maps are concurrent, the errand table locks itself, the ledger is thread-safe.
+ */
+@Component(service = RobotFleet.class, configurationPid = RobotConfig.PID)
+public final class RobotFleet {
+
+    private static final System.Logger LOG = System.getLogger(RobotFleet.class.getName());
+
+    private final FleetView view;
+    private final CommandLedger ledger;
+    private final RobotCommands commands;
+    private final Errands errands = new Errands();
+    private final int retries;
+    /**
+     * The goal of the last go-to sent to each robot and when, until that mission ends (so it is never sent twice);
+     * one the robot does not show after {@link #pendingNanos} is taken as lost (its end was missed).
+     */
+    private final Map<String, SentGoal> sentGoal = new ConcurrentHashMap<>();
+    private final long pendingNanos;
+
+    private record SentGoal(Cell goal, long atNanos) {
+    }
+
+    /** The cell each robot was told to step aside to, until it leaves it. */
+    private final Map<String, Cell> aside = new ConcurrentHashMap<>();
+    /** Refusals in a row per robot. */
+    private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
+    private final AtomicLong replans = new AtomicLong();
+
+    @Activate
+    public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config) {
+        this.view = new FleetView(model);
+        this.ledger = new CommandLedger(bus, "robot-behaviour-");
+        this.commands = new RobotCommands(ledger);
+        this.retries = Math.max(0, config.command_retries());
+        double speed = config.speed() > 0 ? config.speed() : 1;
+        this.pendingNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) * 8
+                / speed);
+    }
+
+    FleetView view() {
+        return view;
+    }
+
+    Errands errands() {
+        return errands;
+    }
+
+    /** @return the area code of the robot's cell (docking 1, unload 2, storage 3), docking when unknown */
+    double area(String robot) {
+        return view.robot(robot).map(s -> s.area()).filter(a -> a >= 1 && a <= 3).orElse(1);
+    }
+
+    /**
+     * The robot goes on with its errand: a robot without one claims a cart (or heads home when none is left); the
+     * go-to is sent unless the robot is there or already on its way.
+     */
+    void resume(String robot, String why) {
+        Optional<RobotState> state = view.robot(robot);
+        Optional<Grid> grid = view.grid();
+        if (state.isEmpty() || grid.isEmpty()) {
+            LOG.log(System.Logger.Level.WARNING, "{0}: cannot go on ({1}): the edge does not know {2} yet", robot, why,
+                    state.isEmpty() ? "the robot" : "the warehouse's map");
+            return;
+        }
+        RobotState s = state.get();
+        Cell side = aside.get(robot);
+        if (side != null) {
+            if (!s.cell().equals(side) && !s.idle()) {
+                return; // still on its way aside
+            }
+            boolean near = view.robots().stream().anyMatch(o -> !o.id().equals(robot)
+                    && o.cell().distance(s.cell()) <= 2);
+            if (s.cell().equals(side) && near) {
+                return; // it waits aside until the robot it let pass is gone
+            }
+            aside.remove(robot);
+        }
+        errands.seen(robot, s.cell(), s.area() == Grid.DOCKING);
+        Errands.Errand e = errands.of(robot);
+        if (e.leg() == Errands.Leg.NONE) {
+            e = errands.claim(robot, s.cell(), view.carts(), grid.get()).orElse(e);
+            if (e.leg() == Errands.Leg.TO_CART) {
+                LOG.log(System.Logger.Level.INFO, "{0} goes for {1} at {2}", robot, e.cart(), e.cartCell());
+            }
+        }
+        if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null) {
+            e = errands.lifted(robot, s.cell(), view.carts(), grid.get()).orElse(e); // a storage cell at last?
+        }
+        Cell goal = e.goal() != null ? e.goal() : e.leg() == Errands.Leg.TO_STORAGE ? null : e.dock();
+        if (goal != null) {
+            goTo(robot, s, goal, why);
+        }
+    }
+
+    /**
+     * The orchestrator told the robot to step aside to a cell: its go-to is cancelled, then it goes there, and it
+     * waits there until no other robot is within two cells of it (the one it let pass is gone).
+     */
+    void sideStep(String robot, Cell cell) {
+        aside.put(robot, cell);
+        CancelMissionCommand cancel = new CancelMissionCommand();
+        cancel.deviceId = robot;
+        cancel.missionType = "goto";
+        send(cancel, "stepping aside to " + cell);
+        sentGoal.remove(robot);
+        GoToCommand go = new GoToCommand();
+        go.deviceId = robot;
+        go.x = cell.x();
+        go.y = cell.y();
+        send(go, "stepping aside to " + cell);
+    }
+
+    /** The robot stands under its cart: lift it, then head for the storage cell it is given. */
+    void lift(String robot) {
+        PickCartCommand pick = new PickCartCommand();
+        pick.deviceId = robot;
+        send(pick, "lifting " + errands.of(robot).cart());
+        Optional<RobotState> s = view.robot(robot);
+        Optional<Grid> grid = view.grid();
+        if (s.isEmpty() || grid.isEmpty()) {
+            return;
+        }
+        Optional<Errands.Errand> e = errands.lifted(robot, s.get().cell(), view.carts(), grid.get());
+        if (e.isEmpty()) {
+            LOG.log(System.Logger.Level.WARNING, "{0}: no free storage cell can be reached with a cart; it waits",
+                    robot);
+            return;
+        }
+        sentGoal.remove(robot);
+        goTo(robot, s.get(), e.get().drop(), "carrying " + e.get().cart() + " to storage");
+    }
+
+    /** The robot is at its storage cell: put the cart down, then head for its dock. */
+    void place(String robot) {
+        PlaceCartCommand place = new PlaceCartCommand();
+        place.deviceId = robot;
+        send(place, "placing its cart in storage");
+        Errands.Errand e = errands.placed(robot);
+        Optional<RobotState> s = view.robot(robot);
+        sentGoal.remove(robot);
+        if (e.dock() != null && s.isPresent()) {
+            goTo(robot, s.get(), e.dock(), "going home");
+        }
+    }
+
+    /** @return whether a cart on the floor outside storage waits for a robot (false until the map is known) */
+    boolean workLeft() {
+        Optional<Grid> grid = view.grid();
+        return grid.isPresent() && errands.workLeft(view.carts(), grid.get());
+    }
+
+    /** The robot is docked: its errand is over. */
+    void docked(String robot) {
+        errands.docked(robot);
+    }
+
+    /** A mission of the robot ended: a go-to to the goal last sent is no longer pending. */
+    void missionEnded(String robot, String type, Integer goalX, Integer goalY) {
+        SentGoal sent = sentGoal.get(robot);
+        if ("goto".equals(type) && sent != null && goalX != null && sent.goal().equals(new Cell(goalX, goalY == null
+                ? -1 : goalY))) {
+            sentGoal.remove(robot);
+        }
+    }
+
+    /**
+     * An outcome arrived on the bus: when it answers one of this behaviour's commands and is a refusal, it is
+     * logged, counted, and the command sent again, or after {@code command.retries} refusals in a row the errand
+     * is planned anew.
+     */
+    void outcome(CommandOutcome o) {
+        CommandLedger.Sent sent = commands.answered(o);
+        if (sent == null) {
+            return;
+        }
+        String robot = sent.command().deviceId;
+        if (o.accepted) {
+            refusals.remove(robot);
+            return;
+        }
+        int n = refusals.merge(robot, 1, Integer::sum);
+        LOG.log(System.Logger.Level.WARNING, "{0} refused {1} ({2}): {3} (status {4}); refusal {5} in a row", robot,
+                o.command, sent.why(), o.reason, o.status, n);
+        if (sent.command() instanceof CancelMissionCommand) {
+            return; // nothing to cancel: the robot's go-to had ended
+        }
+        if (n <= retries) {
+            EdgeCommand again = copy(sent.command());
+            send(again, sent.why() + ", again");
+            return;
+        }
+        refusals.remove(robot);
+        replans.incrementAndGet();
+        sentGoal.remove(robot);
+        errands.release(robot);
+        LOG.log(System.Logger.Level.WARNING, "{0}: errand planned anew after {1} refusals", robot, n);
+    }
+
+    long commandsSent() {
+        return ledger.sent();
+    }
+
+    long commandsRefused() {
+        return ledger.refused();
+    }
+
+    long replans() {
+        return replans.get();
+    }
+
+    private void goTo(String robot, RobotState s, Cell goal, String why) {
+        SentGoal sent = sentGoal.get(robot);
+        boolean pending = sent != null && sent.goal().equals(goal) && System.nanoTime() - sent.atNanos() < pendingNanos;
+        if (s.cell().equals(goal) && s.idle() || s.headingFor(goal) || pending) {
+            return; // there, or on its way: a go-to is never sent twice
+        }
+        GoToCommand go = new GoToCommand();
+        go.deviceId = robot;
+        go.x = goal.x();
+        go.y = goal.y();
+        sentGoal.put(robot, new SentGoal(goal, System.nanoTime()));
+        send(go, why);
+    }
+
+    private void send(EdgeCommand command, String why) {
+        commands.send(command, why); // in order: the next once the edge answered the one before
+    }
+
+    private static EdgeCommand copy(EdgeCommand c) {
+        EdgeCommand again;
+        if (c instanceof GoToCommand g) {
+            GoToCommand go = new GoToCommand();
+            go.x = g.x;
+            go.y = g.y;
+            again = go;
+        } else if (c instanceof PickCartCommand) {
+            again = new PickCartCommand();
+        } else {
+            again = new PlaceCartCommand();
+        }
+        again.deviceId = c.deviceId;
+        return again;
+    }
+}
