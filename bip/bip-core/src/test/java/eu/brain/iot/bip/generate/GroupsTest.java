@@ -108,27 +108,24 @@ class GroupsTest {
         obstacle("A", "Robot1", IS_OBSTACLE);
         obstacle("A", "Robot2", IS_OBSTACLE);
         obstacle("B", "Robot3", IS_OBSTACLE);
-        // offers of p1, p2 (group A) and p3 (group B) together would complete Listing 7's p1 p2 p3 p4: they must not
+        // The deployed rendezvous (Warehouse.bip) is define p4 (p1' p2' p3'): the orchestrator takes any robots that
+        // offered, with itself. Offers of p1, p2 (group A) and p3 (group B) together would make one interaction with
+        // p3 in group A, or one of p1 p2 p3 p4: each group's orchestrator must take its own group's offers only.
         assertThat(bus.published(EVENTS + "ConnectorResolveCollisionOffer"))
                 .extracting(o -> field(o, "group") + "/" + field(o, "component"))
                 .containsExactly("A/Robot1", "A/Robot2", "B/Robot3");
-        assertThat(bus.published(EVENTS + "ConnectorResolveCollision")).isEmpty();
+        List<Object> fired = bus.published(EVENTS + "ConnectorResolveCollision");
+        assertThat(fired).extracting(e -> field(e, "group") + ":" + field(e, "participants"))
+                .containsExactlyInAnyOrder("A:[p1, p4]", "A:[p2, p4]", "B:[p3, p4]");
+        assertThat(data(orchestrator, "dataOf", "A", "Orchestrator1")).containsEntry("collisions", 2);
+        assertThat(data(orchestrator, "dataOf", "B", "Orchestrator1")).containsEntry("collisions", 1);
+        assertThat(data(orchestrator, "dataOf", "Orchestrator1")).containsEntry("collisions", 0);
+        assertThat(places(robots, "A", "Robot3")).as("A's Robot3 offered nothing: not taken by B's Robot3's offer")
+                .isEqualTo(List.of("UNLOAD"));
+        assertThat(bus.published(EVENTS + "ConnectorCollisionResolved")).extracting(e -> field(e, "group"))
+                .containsExactlyInAnyOrder("A", "A", "B");
         assertThat(places(orchestrator, "A", "Orchestrator1")).isEqualTo(List.of("START"));
         assertThat(places(orchestrator, "B", "Orchestrator1")).isEqualTo(List.of("START"));
-
-        obstacle("A", "Robot3", IS_OBSTACLE);
-        List<Object> fired = bus.published(EVENTS + "ConnectorResolveCollision");
-        assertThat(fired).extracting(e -> field(e, "group")).containsExactly("A");
-        assertThat(fired).extracting(e -> field(e, "participants")).containsExactly(List.of("p1", "p2", "p3", "p4"));
-        assertThat(data(orchestrator, "dataOf", "A", "Orchestrator1")).containsEntry("collisions", 1);
-        assertThat(data(orchestrator, "dataOf", "B", "Orchestrator1")).containsEntry("collisions", 0);
-        for (String r : List.of("Robot1", "Robot2", "Robot3")) {
-            // A went through the collision and the resolution (the orchestrator's internal step and Connector3)
-            assertThat(places(robots, "A", r)).isEqualTo(List.of("START"));
-        }
-        assertThat(places(robots, "B", "Robot3")).as("still waiting for its own group").isEqualTo(List.of("OBSTACLE"));
-        assertThat(bus.published(EVENTS + "ConnectorCollisionResolved")).extracting(e -> field(e, "group"))
-                .containsExactly("A");
     }
 
     @Test
@@ -158,12 +155,13 @@ class GroupsTest {
         obstacle("", "Robot2", IS_OBSTACLE);
         obstacle(null, "Robot3", IS_OBSTACLE);
         assertThat(call(robots, "groups")).isEqualTo(List.of(""));
-        assertThat(bus.published(EVENTS + "ConnectorResolveCollision")).hasSize(1)
+        // each robot's report is taken at once (the subset rendezvous of Warehouse.bip), all in the default group
+        assertThat(bus.published(EVENTS + "ConnectorResolveCollision")).hasSize(3)
                 .allSatisfy(e -> assertThat(field(e, "group")).isNull());
         assertThat(bus.published(EVENTS + "ConnectorResolveCollisionOffer")).hasSize(3)
                 .allSatisfy(e -> assertThat(field(e, "group")).isNull());
-        assertThat(data(orchestrator, "dataOf", "Orchestrator1")).containsEntry("collisions", 1);
-        assertThat(data(orchestrator, "dataOf", null, "Orchestrator1")).containsEntry("collisions", 1);
+        assertThat(data(orchestrator, "dataOf", "Orchestrator1")).containsEntry("collisions", 3);
+        assertThat(data(orchestrator, "dataOf", null, "Orchestrator1")).containsEntry("collisions", 3);
     }
 
     @Test
