@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CompletionStage;
 
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
@@ -44,28 +45,46 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     private final Edge edge;
     private final Logger log;
 
+    /**
+     * Framework property: the fleet's URL when the configuration sets no {@code fleet.url} (so that
+     * {@code ./fabric-node --fleet-port=N} points the edge at the robot-sim it started on another port).
+     */
+    static final String FLEET_URL_PROPERTY = "eu.brain.iot.edge.fleet.url";
+
+    /** The framework property's value, or null. */
+    private final String frameworkFleetUrl;
+
     @Activate
-    public EdgeComponent(EdgeConfig config, @Reference EventBus bus,
-            @Reference(service = LoggerFactory.class) Logger log) {
+    public EdgeComponent(EdgeConfig config, Map<String, Object> properties, BundleContext context,
+            @Reference EventBus bus, @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
-        FleetSettings settings = checked(config);
+        this.frameworkFleetUrl = context.getProperty(FLEET_URL_PROPERTY);
+        FleetSettings settings = checked(config, properties);
         this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
         log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
     }
 
     @Modified
-    void modified(EdgeConfig config) {
+    void modified(EdgeConfig config, Map<String, Object> properties) {
         try {
-            edge.configure(FleetSettings.from(config));
+            edge.configure(FleetSettings.from(config, fleetUrl(config, properties, frameworkFleetUrl)));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: "
                     + e.getMessage());
         }
     }
 
-    private FleetSettings checked(EdgeConfig config) {
+    /** The configuration's {@code fleet.url} when it sets one, else the framework property's, else the default. */
+    static String fleetUrl(EdgeConfig config, Map<String, Object> properties, String frameworkFleetUrl) {
+        if (properties.containsKey("fleet.url") || frameworkFleetUrl == null || frameworkFleetUrl.isBlank()) {
+            return config.fleet_url();
+        }
+        return frameworkFleetUrl.trim();
+    }
+
+    private FleetSettings checked(EdgeConfig config, Map<String, Object> properties) {
         try {
-            return FleetSettings.from(config);
+            return FleetSettings.from(config, fleetUrl(config, properties, frameworkFleetUrl));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
             throw e;

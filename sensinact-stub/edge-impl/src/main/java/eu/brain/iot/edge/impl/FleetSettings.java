@@ -36,7 +36,12 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
     }
 
     static FleetSettings from(EdgeConfig c) {
-        return of(c.fleet_url(), List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
+        return from(c, c.fleet_url());
+    }
+
+    /** The configuration with {@code url} as the fleet's URL (see {@code EdgeComponent.fleetUrl}). */
+    static FleetSettings from(EdgeConfig c, String url) {
+        return of(url, List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
                 c.max_connections(), c.io_threads(), c.unreachable_after_failures(), c.backoff_max_ms());
     }
 
