@@ -55,36 +55,41 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     private final String frameworkFleetUrl;
 
     @Activate
-    public EdgeComponent(EdgeConfig config, Map<String, Object> properties, BundleContext context,
+    public EdgeComponent(EdgeConfig config, BundleContext context,
             @Reference EventBus bus, @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         this.frameworkFleetUrl = context.getProperty(FLEET_URL_PROPERTY);
-        FleetSettings settings = checked(config, properties);
+        FleetSettings settings = checked(config);
         this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
         log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
     }
 
     @Modified
-    void modified(EdgeConfig config, Map<String, Object> properties) {
+    void modified(EdgeConfig config) {
         try {
-            edge.configure(FleetSettings.from(config, fleetUrl(config, properties, frameworkFleetUrl)));
+            edge.configure(FleetSettings.from(config, fleetUrl(config, frameworkFleetUrl)));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: "
                     + e.getMessage());
         }
     }
 
-    /** The configuration's {@code fleet.url} when it sets one, else the framework property's, else the default. */
-    static String fleetUrl(EdgeConfig config, Map<String, Object> properties, String frameworkFleetUrl) {
-        if (properties.containsKey("fleet.url") || frameworkFleetUrl == null || frameworkFleetUrl.isBlank()) {
+    /**
+     * The configuration's {@code fleet.url} when it sets another than the default, else the framework property's,
+     * else the default. (The component's properties always hold a {@code fleet.url}: bnd adds the defaults of the
+     * configuration type, so the default value is what says that none was configured.)
+     */
+    static String fleetUrl(EdgeConfig config, String frameworkFleetUrl) {
+        if (!EdgeConfig.DEFAULT_FLEET_URL.equals(config.fleet_url()) || frameworkFleetUrl == null
+                || frameworkFleetUrl.isBlank()) {
             return config.fleet_url();
         }
         return frameworkFleetUrl.trim();
     }
 
-    private FleetSettings checked(EdgeConfig config, Map<String, Object> properties) {
+    private FleetSettings checked(EdgeConfig config) {
         try {
-            return FleetSettings.from(config, fleetUrl(config, properties, frameworkFleetUrl));
+            return FleetSettings.from(config, fleetUrl(config, frameworkFleetUrl));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
             throw e;

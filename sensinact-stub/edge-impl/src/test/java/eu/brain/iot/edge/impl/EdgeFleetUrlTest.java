@@ -16,16 +16,17 @@ class EdgeFleetUrlTest {
 
     @Test
     void theFrameworkPropertyWhenTheConfigurationSetsNone() {
-        Map<String, Object> none = Map.of();
-        assertThat(EdgeComponent.fleetUrl(config(none), none, "http://127.0.0.1:18090/"))
+        // what DS gives without a configuration: bnd put the type's defaults in the component's properties
+        EdgeConfig none = config(Map.of("fleet.url", EdgeConfig.DEFAULT_FLEET_URL));
+        assertThat(EdgeComponent.fleetUrl(none, "http://127.0.0.1:18090/")).isEqualTo("http://127.0.0.1:18090/");
+        assertThat(EdgeComponent.fleetUrl(config(Map.of()), "http://127.0.0.1:18090/"))
                 .isEqualTo("http://127.0.0.1:18090/");
-        assertThat(EdgeComponent.fleetUrl(config(none), none, null)).isEqualTo("http://127.0.0.1:8090/");
+        assertThat(EdgeComponent.fleetUrl(none, null)).isEqualTo("http://127.0.0.1:8090/");
     }
 
     @Test
     void theConfigurationWins() {
-        Map<String, Object> set = Map.of("fleet.url", "http://fleet.example:8080/");
-        assertThat(EdgeComponent.fleetUrl(config(set), set, "http://127.0.0.1:18090/"))
-                .isEqualTo("http://fleet.example:8080/");
+        EdgeConfig set = config(Map.of("fleet.url", "http://fleet.example:8080/"));
+        assertThat(EdgeComponent.fleetUrl(set, "http://127.0.0.1:18090/")).isEqualTo("http://fleet.example:8080/");
     }
 }
