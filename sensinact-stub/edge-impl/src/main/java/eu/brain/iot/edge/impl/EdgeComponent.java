@@ -5,6 +5,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CompletionStage;
 
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
@@ -44,10 +45,20 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     private final Edge edge;
     private final Logger log;
 
+    /**
+     * Framework property: the fleet's URL when the configuration sets no {@code fleet.url} (so that
+     * {@code ./fabric-node --fleet-port=N} points the edge at the robot-sim it started on another port).
+     */
+    static final String FLEET_URL_PROPERTY = "eu.brain.iot.edge.fleet.url";
+
+    /** The framework property's value, or null. */
+    private final String frameworkFleetUrl;
+
     @Activate
-    public EdgeComponent(EdgeConfig config, @Reference EventBus bus,
-            @Reference(service = LoggerFactory.class) Logger log) {
+    public EdgeComponent(EdgeConfig config, BundleContext context,
+            @Reference EventBus bus, @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
+        this.frameworkFleetUrl = context.getProperty(FLEET_URL_PROPERTY);
         FleetSettings settings = checked(config);
         this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
         log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
@@ -56,16 +67,29 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     @Modified
     void modified(EdgeConfig config) {
         try {
-            edge.configure(FleetSettings.from(config));
+            edge.configure(FleetSettings.from(config, fleetUrl(config, frameworkFleetUrl)));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge keeps its previous one: "
                     + e.getMessage());
         }
     }
 
+    /**
+     * The configuration's {@code fleet.url} when it sets another than the default, else the framework property's,
+     * else the default. (The component's properties always hold a {@code fleet.url}: bnd adds the defaults of the
+     * configuration type, so the default value is what says that none was configured.)
+     */
+    static String fleetUrl(EdgeConfig config, String frameworkFleetUrl) {
+        if (!EdgeConfig.DEFAULT_FLEET_URL.equals(config.fleet_url()) || frameworkFleetUrl == null
+                || frameworkFleetUrl.isBlank()) {
+            return config.fleet_url();
+        }
+        return frameworkFleetUrl.trim();
+    }
+
     private FleetSettings checked(EdgeConfig config) {
         try {
-            return FleetSettings.from(config);
+            return FleetSettings.from(config, fleetUrl(config, frameworkFleetUrl));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
             throw e;

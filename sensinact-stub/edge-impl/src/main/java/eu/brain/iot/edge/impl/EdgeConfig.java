@@ -11,8 +11,11 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     /** The configuration PID; the edge's core names it in its messages, the component is configured by it. */
     String PID = "eu.brain.iot.edge";
 
+    /** Where robot-sim listens by default. */
+    String DEFAULT_FLEET_URL = "http://127.0.0.1:8090/";
+
     @AttributeDefinition(description = "Base URL of the fleet's REST API (robot-sim: one port for every robot and door)")
-    String fleet_url() default "http://127.0.0.1:8090/";
+    String fleet_url() default DEFAULT_FLEET_URL;
 
     @AttributeDefinition(description = "Robot ids to poll. Empty, with doors empty too: ask the fleet (GET /)")
     String[] robots() default {};

@@ -74,6 +74,11 @@ final class FleetHttpClient implements AutoCloseable {
     private CompletableFuture<HttpAnswer> send(HttpMethod method, URI uri, byte[] json) {
         CompletableFuture<HttpAnswer> answer = new CompletableFuture<>();
         InetSocketAddress host = InetSocketAddress.createUnresolved(uri.getHost(), port(uri));
+        if (group.isShuttingDown()) {
+            // Netty would reject the acquire's listener, log an ERROR with its stack trace and never answer
+            answer.completeExceptionally(new DeviceIOException("the edge's HTTP client is closed"));
+            return answer;
+        }
         FixedChannelPool pool;
         try {
             pool = pools.get(host);
@@ -131,6 +136,11 @@ final class FleetHttpClient implements AutoCloseable {
                     + " ms (every connection busy)";
         }
         return "cannot reach " + uri.getHost() + ":" + port(uri) + ": " + cause;
+    }
+
+    /** Whether {@link #close} finished stopping the I/O threads. */
+    boolean terminated() {
+        return group.isTerminated();
     }
 
     @Override

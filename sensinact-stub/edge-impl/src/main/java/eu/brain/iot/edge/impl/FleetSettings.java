@@ -37,9 +37,13 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
     }
 
     static FleetSettings from(EdgeConfig c) {
-        FleetSettings s = of(c.fleet_url(), List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(),
-                c.request_timeout_ms(), c.max_connections(), c.io_threads(), c.unreachable_after_failures(),
-                c.backoff_max_ms());
+        return from(c, c.fleet_url());
+    }
+
+    /** The configuration with {@code url} as the fleet's URL (see {@code EdgeComponent.fleetUrl}). */
+    static FleetSettings from(EdgeConfig c, String url) {
+        FleetSettings s = of(url, List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
+                c.max_connections(), c.io_threads(), c.unreachable_after_failures(), c.backoff_max_ms());
         return s.withWorldPeriod(c.world_period_ms());
     }
 

@@ -38,7 +38,16 @@ final class FleetThread implements Executor {
         return executor.schedule(task, delay, unit);
     }
 
+    /**
+     * Stops the fleet thread and waits (up to 2 s) for the task it is running, so that the edge's HTTP client,
+     * closed next, is not used by a poll still under way (Netty would log an ERROR with a stack trace).
+     */
     void shutdown() {
         executor.shutdownNow();
+        try {
+            executor.awaitTermination(2, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
     }
 }

@@ -1,11 +1,15 @@
 package eu.brain.iot.edge.rest;
 
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.List;
 
 import org.apache.felix.http.jetty.ConnectorFactory;
 import org.eclipse.jetty.server.AbstractConnector;
 import org.eclipse.jetty.server.ConnectionLimit;
 import org.eclipse.jetty.server.Connector;
+import org.eclipse.jetty.server.HttpConfiguration;
+import org.eclipse.jetty.server.HttpConnectionFactory;
 import org.eclipse.jetty.server.LocalConnector;
 import org.eclipse.jetty.server.Server;
 import org.osgi.service.component.annotations.Activate;
@@ -18,7 +22,9 @@ import org.osgi.service.log.LoggerFactory;
 /**
  * What Felix HTTP 5.2.2 offers no property for: JSON instead of Jetty's HTML error pages (also for the errors of its
  * request parser, 400/414/431, which no servlet error page sees), a bound on connections in total (Jetty's
- * {@link ConnectionLimit}) and one per client address ({@link PerClientLimit}).
+ * {@link ConnectionLimit}) and one per client address ({@link PerClientLimit}), and a request handed to the API
+ * once its headers are in (Jetty waits for the first body bytes by default, so an ACT declaring a body over
+ * {@code act.max.body.bytes} and sending none got no 413 until the idle timeout).
  * <p>
  * Felix HTTP hands its running Jetty {@link Server} to every {@link ConnectorFactory} service (its extension point
  * for extra connectors) and only there; this component uses that call to install the above on the server and its
@@ -33,7 +39,7 @@ public final class JettySetup implements ConnectorFactory {
     private final int maxConnections;
     private final int maxPerClient;
     private final Logger log;
-    private final java.util.List<Runnable> undo = new java.util.ArrayList<>();
+    private final List<Runnable> undo = new ArrayList<>();
 
     @Activate
     public JettySetup(RestConfig config, @Reference(service = LoggerFactory.class) Logger log) {
@@ -56,9 +62,16 @@ public final class JettySetup implements ConnectorFactory {
         } catch (Exception e) {
             log.warn("could not limit Jetty's connections to " + maxConnections + ": " + e);
         }
+        List<HttpConfiguration> delayed = new ArrayList<>();
         for (Connector c : network) {
             if (c instanceof AbstractConnector a) {
                 a.addBean(perClient);
+            }
+            HttpConnectionFactory http = c.getConnectionFactory(HttpConnectionFactory.class);
+            if (http != null && http.getHttpConfiguration().isDelayDispatchUntilContent()) {
+                // read per request: applies from the next request; bodies are read without a thread (BodyReader)
+                http.getHttpConfiguration().setDelayDispatchUntilContent(false);
+                delayed.add(http.getHttpConfiguration());
             }
         }
         undo.add(() -> {
@@ -74,6 +87,7 @@ public final class JettySetup implements ConnectorFactory {
                     a.removeBean(perClient);
                 }
             }
+            delayed.forEach(h -> h.setDelayDispatchUntilContent(true));
         });
         log.info("Jetty: JSON error pages, at most " + maxConnections + " connections (" + maxPerClient
                 + " per client address)");

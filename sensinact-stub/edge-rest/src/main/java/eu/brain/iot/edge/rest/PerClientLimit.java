@@ -15,6 +15,11 @@ import org.osgi.service.log.Logger;
  * the limit is closed as soon as it opens, so that one client cannot take every connection. The first refusal for
  * an address is logged at warn, later ones not until its count drops below the limit again.
  * <p>
+ * {@code 127.0.0.1} and {@code ::1} are not limited: every program on this machine (curl, a browser showing the
+ * dashboard, a script) connects from them, so a limit there would let one local program that holds slow requests
+ * lock every other one out; the total limit ({@code max.connections}) still bounds them. Other addresses, remote
+ * clients (and {@code 127.0.0.2} etc. for tests), are limited.
+ * <p>
  * Threads: Jetty's selector threads, any number at once; the counts are concurrent.
  */
 final class PerClientLimit implements Connection.Listener {
@@ -34,7 +39,7 @@ final class PerClientLimit implements Connection.Listener {
     @Override
     public void onOpened(Connection connection) {
         InetAddress client = client(connection);
-        if (client == null) {
+        if (client == null || isThisMachinesOwn(client)) {
             return;
         }
         clients.put(connection, client);
@@ -59,6 +64,11 @@ final class PerClientLimit implements Connection.Listener {
             warned.remove(client);
             open.computeIfPresent(client, (c, count) -> count.get() <= 0 ? null : count);
         }
+    }
+
+    private static boolean isThisMachinesOwn(InetAddress a) {
+        byte[] b = a.getAddress();
+        return b.length == 4 ? b[0] == 127 && b[1] == 0 && b[2] == 0 && b[3] == 1 : a.isLoopbackAddress();
     }
 
     private static InetAddress client(Connection connection) {

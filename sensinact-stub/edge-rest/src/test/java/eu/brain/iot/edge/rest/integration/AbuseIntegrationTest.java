@@ -61,7 +61,9 @@ class AbuseIntegrationTest extends RestTestBase {
 
     @Test
     void slowBodiesHoldNoThreadAndEndIn408() throws Exception {
-        configure(Map.of("max.connections.per.client", 1_000, "act.body.timeout.ms", 2_000L));
+        // the default per-client limit (64): the slow clients and the other one all connect from 127.0.0.1, as
+        // every program on this machine does, and the other one is served all the same
+        configure(Map.of("act.body.timeout.ms", 2_000L));
         List<Socket> slow = new ArrayList<>();
         try {
             for (int i = 0; i < 220; i++) { // more than Jetty's 200 threads
@@ -88,8 +90,8 @@ class AbuseIntegrationTest extends RestTestBase {
     @Test
     void anOversizeDeclaredBodyIsRefusedAtOnce() throws Exception {
         try (Socket s = RawHttp.connect(base, null)) {
-            // Jetty hands a request to the API once its first body bytes are there: one byte of the 100 MB
-            s.getOutputStream().write((actHead(100_000_000) + "{").getBytes(StandardCharsets.UTF_8));
+            // the headers alone, not a byte of the 100 MB: answered before any body arrives
+            s.getOutputStream().write(actHead(100_000_000).getBytes(StandardCharsets.UTF_8));
             RawHttp.Answer a = RawHttp.read(s.getInputStream());
             assertError(a, 413, "larger than 65536 bytes", "act.max.body.bytes");
             assertThat(a.header("Connection")).isEqualTo("close");
