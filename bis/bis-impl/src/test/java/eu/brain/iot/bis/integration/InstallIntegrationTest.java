@@ -2,6 +2,8 @@ package eu.brain.iot.bis.integration;
 
 import static eu.brain.iot.bis.integration.TestRepository.DOOR;
 import static eu.brain.iot.bis.integration.TestRepository.DOOR_CLOSED;
+import static eu.brain.iot.bis.integration.TestRepository.EDGE_API;
+import static eu.brain.iot.bis.integration.TestRepository.EDGE_MODEL_API;
 import static eu.brain.iot.bis.integration.TestRepository.EVENTS;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT_UNLOAD;
@@ -37,7 +39,10 @@ class InstallIntegrationTest extends BisTestBase {
         assertThat(door.symbolicName).isEqualTo(DOOR);
         assertThat(door.state).isEqualTo("ACTIVE");
         assertThat(door.reason).isEqualTo("test: event had no consumer");
-        assertThat(door.bundles).extracting(b -> b.symbolicName).containsExactly(DOOR, EVENTS);
+        // the behaviour first, then what it needs: the events bundle and the edge's two API bundles it imports
+        assertThat(door.bundles.get(0).symbolicName).isEqualTo(DOOR);
+        assertThat(door.bundles).extracting(b -> b.symbolicName).containsExactlyInAnyOrder(DOOR, EVENTS, EDGE_API,
+                EDGE_MODEL_API);
         assertThat(bundle(DOOR).getState()).isEqualTo(Bundle.ACTIVE);
         assertThat(bundle(EVENTS).getState()).isEqualTo(Bundle.ACTIVE);
         assertThat(busKnows(DOOR)).as("the bus lists the door's smart behaviour when the promise resolves").isTrue();
@@ -46,9 +51,12 @@ class InstallIntegrationTest extends BisTestBase {
 
         // a second behaviour shares the events bundle: counted, not installed twice
         InstalledBehaviour robot = value(installer.install(byType(ROBOT_UNLOAD)));
-        assertThat(robot.bundles).extracting(b -> b.symbolicName).containsExactly(ROBOT, EVENTS);
+        assertThat(robot.bundles).extracting(b -> b.symbolicName).containsExactlyInAnyOrder(ROBOT, EVENTS, EDGE_API,
+                EDGE_MODEL_API);
         assertThat(bundleCount(EVENTS)).isEqualTo(1);
-        InstalledBundle shared = installer.installed().get(0).bundles.get(1);
+        assertThat(bundleCount(EDGE_API)).isEqualTo(1);
+        InstalledBundle shared = installer.installed().get(0).bundles.stream()
+                .filter(b -> b.symbolicName.equals(EVENTS)).findFirst().orElseThrow();
         assertThat(shared.users).isEqualTo(2);
 
         // uninstalling one keeps what the other needs; uninstalling both leaves the framework as it was
@@ -58,6 +66,7 @@ class InstallIntegrationTest extends BisTestBase {
         assertThat(busKnows(DOOR)).isFalse();
         value(installer.uninstall(ROBOT, "test", false));
         assertThat(bundle(EVENTS)).isNull();
+        assertThat(bundle(EDGE_API)).isNull();
         assertThat(frameworkBundles()).isEqualTo(before);
     }
 

@@ -27,6 +27,9 @@ final class TestRepository {
     static final String ROBOT = "eu.brain.iot.behaviours.robot";
     static final String ORCHESTRATOR = "eu.brain.iot.behaviours.orchestrator";
     static final String EVENTS = "eu.brain.iot.behaviours.events";
+    /** The edge's API bundles, which the behaviours import (they drive the fleet through the edge). */
+    static final String EDGE_API = "eu.brain.iot.edge.api";
+    static final String EDGE_MODEL_API = "eu.brain.iot.edge.model.api";
     static final String DOOR_CLOSED = "eu.brain.iot.behaviours.events.DoorBehaviorClosed";
     static final String ROBOT_UNLOAD = "eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation";
     static final String ROBOT_COLLISION = "eu.brain.iot.behaviours.events.ConnectorResolveCollision";

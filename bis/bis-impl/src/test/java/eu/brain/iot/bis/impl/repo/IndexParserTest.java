@@ -25,7 +25,8 @@ class IndexParserTest {
 
         assertThat(facts).extracting(BehaviourResource::symbolicName).containsExactlyInAnyOrder(
                 "eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot",
-                "eu.brain.iot.behaviours.orchestrator", "eu.brain.iot.behaviours.events");
+                "eu.brain.iot.behaviours.orchestrator", "eu.brain.iot.behaviours.events", "eu.brain.iot.edge.api",
+                "eu.brain.iot.edge.model.api");
         BehaviourResource door = facts.stream().filter(f -> f.symbolicName().endsWith(".door")).findFirst()
                 .orElseThrow();
         assertThat(door.isBehaviour()).isTrue();
@@ -36,12 +37,15 @@ class IndexParserTest {
         BehaviourResource events = facts.stream().filter(f -> f.symbolicName().endsWith(".events")).findFirst()
                 .orElseThrow();
         assertThat(events.isBehaviour()).as("the events bundle is a library, no behaviour").isFalse();
+        assertThat(facts).filteredOn(f -> f.symbolicName().startsWith("eu.brain.iot.edge."))
+                .as("the edge's API bundles, which the behaviours import, are libraries").hasSize(2)
+                .noneMatch(BehaviourResource::isBehaviour);
     }
 
     @Test
     void readsTheGzippedIndexAlike() throws Exception {
         Path gz = REPOSITORY.resolve("index.xml.gz");
-        assertThat(IndexParser.parse(Files.readAllBytes(gz), gz.toUri())).hasSize(4);
+        assertThat(IndexParser.parse(Files.readAllBytes(gz), gz.toUri())).hasSize(6);
     }
 
     @Test
