@@ -142,6 +142,22 @@ class DashboardAuthTest {
         }
     }
 
+    @Test
+    void theScreenshotEntryPointLogsInAndWaitsForTheDrawing() throws Exception {
+        Chromium.assumeInstalled();
+        Path out = DashboardPage.SCREENSHOTS.resolve("screenshot-entry-point.png");
+        Files.deleteIfExists(out);
+        assertThat(Screenshot.run(new String[] { node.dashboard().toString(), out.toString(), "--token-file",
+                home.resolve("token").resolve("api-token").toString(), "--timeout-s", "60" })).isZero();
+        assertThat(out).isNotEmptyFile();
+        byte[] png = Files.readAllBytes(out);
+        assertThat(new String(png, 1, 3, StandardCharsets.US_ASCII)).isEqualTo("PNG");
+        // without the token: a screenshot of the login form, and a status that says the page is not live
+        Path login = DashboardPage.SCREENSHOTS.resolve("screenshot-entry-point-login.png");
+        assertThat(Screenshot.run(new String[] { node.dashboard().toString(), login.toString() })).isEqualTo(1);
+        assertThat(login).isNotEmptyFile();
+    }
+
     /** A session as a browser opens one: the token once, as a bearer token, with a JSON body. */
     private String session() throws Exception {
         HttpResponse<String> r = send(request("sensinact/session").header("Authorization", "Bearer " + token)
