@@ -15,7 +15,7 @@ import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
-import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
@@ -40,23 +40,15 @@ class DashboardApiTest {
     @TempDir
     static Path home;
 
+    @AutoClose
     private RobotSim sim;
+    @AutoClose
     private Node node;
 
     @BeforeAll
     void start() throws Exception {
         sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
         node = new Node(home.resolve("node"), sim.baseUri(), 100, false).start();
-    }
-
-    @AfterAll
-    void stop() throws Exception {
-        if (node != null) {
-            node.close();
-        }
-        if (sim != null) {
-            sim.close();
-        }
     }
 
     @Test
@@ -109,13 +101,7 @@ class DashboardApiTest {
 
     private HttpResponse<String> expectError(String method, String path, int status, String saying) throws Exception {
         HttpResponse<String> r = send(method, path);
-        assertThat(r.statusCode()).as(method + " " + path + ": " + r.body()).isEqualTo(status);
-        assertThat(r.headers().firstValue("Content-Type").orElse("")).startsWith("application/json");
-        JsonNode body = JSON.readTree(r.body());
-        assertThat(body.get("status").asInt()).isEqualTo(status);
-        if (saying != null) {
-            assertThat(body.get("error").asText()).contains(saying);
-        }
+        JsonErrors.assertJsonError(r, status, saying);
         return r;
     }
 

@@ -16,7 +16,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.Duration;
 
-import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
@@ -24,7 +24,6 @@ import org.junit.jupiter.api.io.TempDir;
 import org.openqa.selenium.By;
 import org.openqa.selenium.chrome.ChromeDriver;
 
-import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 import eu.brain.iot.robotsim.RobotSim;
@@ -46,7 +45,9 @@ class DashboardAuthTest {
     @TempDir
     static Path home;
 
+    @AutoClose
     private RobotSim sim;
+    @AutoClose
     private Node node;
     private String token;
 
@@ -56,16 +57,6 @@ class DashboardAuthTest {
         Path tokenFile = home.resolve("token").resolve("api-token");
         node = new Node(home.resolve("node"), sim.baseUri(), 100, false).exposed(tokenFile).start();
         token = Files.readString(tokenFile).strip();
-    }
-
-    @AfterAll
-    void stop() throws Exception {
-        if (node != null) {
-            node.close();
-        }
-        if (sim != null) {
-            sim.close();
-        }
     }
 
     @Test
@@ -177,14 +168,7 @@ class DashboardAuthTest {
     }
 
     private static void assertError(HttpResponse<String> r, int status, String field, String saying) throws Exception {
-        assertThat(r.statusCode()).as(r.body()).isEqualTo(status);
-        assertThat(r.headers().firstValue("Content-Type").orElse("")).startsWith("application/json");
-        JsonNode body = JSON.readTree(r.body());
-        assertThat(body.get("status").asInt()).isEqualTo(status);
-        assertThat(body.get("field").asText()).isEqualTo(field);
-        if (saying != null) {
-            assertThat(body.get("error").asText()).contains(saying);
-        }
+        assertThat(JsonErrors.assertJsonError(r, status, saying).get("field").asText()).isEqualTo(field);
     }
 
     private String raw(String request) throws Exception {
