@@ -161,11 +161,6 @@ public final class RequestGate implements Filter, AccessGate {
         }
     }
 
-    @Override
-    public boolean authenticationRequired() {
-        return authRequired;
-    }
-
     private void check(HttpServletRequest req) {
         enforce(req, true, true);
     }

@@ -32,9 +32,6 @@ public interface AccessGate {
      */
     Refusal check(HttpServletRequest request, boolean authenticate);
 
-    /** Whether requests must be authenticated (the node is exposed beyond loopback, or {@code auth=token}). */
-    boolean authenticationRequired();
-
     /**
      * Why a request is refused.
      *
