@@ -79,6 +79,43 @@ function onDelta(e) {
   changed();
 }
 
+// When the node is exposed beyond loopback its API answers 401 until this browser has a session: a form takes the
+// token and POSTs it (as a bearer token, with a JSON body, as the node's gate demands of every POST) to the node's
+// session endpoint, which answers with an HttpOnly cookie that the page's requests and its stream then carry.
+const login = document.getElementById('login');
+const loginToken = document.getElementById('login-token');
+const loginError = document.getElementById('login-error');
+
+function showLogin(message) {
+  if (source) { source.close(); source = null; }
+  setConnection('login', 'log in');
+  loginError.textContent = message || '';
+  login.hidden = false;
+  loginToken.focus();
+}
+
+login.addEventListener('submit', async (e) => {
+  e.preventDefault();
+  loginError.textContent = '';
+  try {
+    const answer = await fetch('/sensinact/session', {
+      method: 'POST', cache: 'no-store', credentials: 'same-origin',
+      headers: { 'Authorization': `Bearer ${loginToken.value.trim()}`, 'Content-Type': 'application/json' },
+      body: '{}',
+    });
+    if (!answer.ok) {
+      const error = await answer.json().catch(() => ({}));
+      showLogin(answer.status === 401 ? 'wrong token' : (error.error || `the node answered ${answer.status}`));
+      return;
+    }
+    loginToken.value = '';
+    login.hidden = true;
+    start();
+  } catch (err) {
+    showLogin(`the node did not answer (${err.message})`);
+  }
+});
+
 function connect() {
   const url = 'api/stream' + (model.eventId ? `?lastEventId=${encodeURIComponent(model.eventId)}` : '');
   source = new EventSource(url);
@@ -91,7 +128,7 @@ function connect() {
     if (source.readyState === EventSource.CLOSED) {
       setConnection('reconnecting', `reconnecting in ${Math.round(retryMs / 100) / 10} s…`);
       source.close();
-      setTimeout(connect, retryMs);
+      setTimeout(reconnect, retryMs);
       retryMs = Math.min(retryMs * 2, 5000);
     } else {
       setConnection('reconnecting', 'reconnecting…');
@@ -99,9 +136,21 @@ function connect() {
   };
 }
 
+// An EventSource hides its error's status: ask once whether the session ended (the node restarted, or it expired).
+async function reconnect() {
+  try {
+    const answer = await fetch('api/snapshot', { method: 'HEAD', cache: 'no-store' });
+    if (answer.status === 401) { showLogin('the session ended: log in again'); return; }
+  } catch (e) {
+    // the node is down: the stream's retry below says so
+  }
+  connect();
+}
+
 async function start() {
   try {
     const answer = await fetch('api/snapshot', { cache: 'no-store' });
+    if (answer.status === 401) { showLogin(); return; }
     if (answer.ok) onSnapshot({ data: await answer.text() });
   } catch (e) {
     // the stream sends a snapshot too: go on

@@ -40,7 +40,8 @@ class FabricNodeSmokeTest {
             // then the edge and Felix HTTP start; the Gogo shell comes after both lines, so its prompt is last
             String prompted = node.awaitOutput("g! ");
             assertThat(prompted).containsPattern(ALL_ACTIVE + "\\d+ ms \\(the core, then the edge and its REST API\\): "
-                    + "\\d+ of \\d+ bundles active; the other (one starts|\\d+ start) at level 3: the Gogo shell"
+                    + "\\d+ of \\d+ bundles active; dashboard: http://127\\.0\\.0\\.1:\\d+/dashboard/; "
+                    + "the other (one starts|\\d+ start) at level 3: the Gogo shell"
                     + "( and the config folder's bundles)?, last so that its prompt follows this line");
             assertThat(prompted.indexOf("g! ")).isGreaterThan(prompted.indexOf(ALL_ACTIVE))
                     .isGreaterThan(prompted.indexOf(READY));
@@ -128,7 +129,8 @@ class FabricNodeSmokeTest {
             assertThat(node.output())
                     .containsPattern(READY + "\\d+ ms \\(JVM start to event bus up; start level 1: \\d+ of \\d+ "
                             + "bundles active, the other \\d+ start next\\); check run")
-                    .containsPattern(ALL_ACTIVE + "\\d+ ms [^\\n]*: (\\d+) of (\\d+) bundles active; a check run "
+                    .containsPattern(ALL_ACTIVE + "\\d+ ms [^\\n]*: (\\d+) of (\\d+) bundles active; dashboard: "
+                            + "http://127\\.0\\.0\\.1:\\d+/dashboard/; a check run "
                             + "stops here, before level 3 \\(the Gogo shell\\)")
                     .as("no shell in check mode").doesNotContain("Welcome to Apache Felix Gogo")
                     .doesNotContain("Exception")

@@ -15,6 +15,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletNa
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPattern;
 
 import jakarta.servlet.AsyncContext;
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -39,13 +40,18 @@ public final class ApiServlet extends HttpServlet {
     private final transient Logger log;
 
     @Activate
-    public ApiServlet(@Reference Hub hub, @Reference(service = LoggerFactory.class) Logger log) {
+    public ApiServlet(@Reference Hub hub, @Reference(service = LoggerFactory.class) Logger log,
+            @Reference(target = Gate.TARGET) Filter gate) {
         this.hub = hub;
         this.log = log;
     }
 
     @Override
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
+        if (!Gate.passed(req)) {
+            Json.error(resp, 503, "the dashboard is (re)starting; try again in a moment");
+            return;
+        }
         String path = req.getPathInfo() == null ? "/" : req.getPathInfo();
         if (!path.equals("/snapshot") && !path.equals("/stream")) {
             Json.error(resp, 404, "no " + ROOT + path + "; the dashboard's API has " + PATHS);

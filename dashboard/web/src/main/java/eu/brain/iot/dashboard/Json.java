@@ -11,7 +11,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 import jakarta.servlet.http.HttpServletResponse;
 
-/** JSON for the page: answers and errors; every error is {@code {"error": "...", "status": N}}, never a stack trace. */
+/** JSON for the page: answers and errors; every error is {@code {"error": "...", "status": N}} ({@code "field"} too when one header is at fault), never a stack trace. */
 final class Json {
 
     /** Thread-safe once configured; shared by every thread. */
@@ -42,8 +42,16 @@ final class Json {
     }
 
     static void error(HttpServletResponse resp, int status, String message) throws IOException {
+        error(resp, status, message, null);
+    }
+
+    /** An error about one header ({@code field}: {@code Host}, {@code Authorization}...), or {@code null}. */
+    static void error(HttpServletResponse resp, int status, String message, String field) throws IOException {
         Map<String, Object> body = new LinkedHashMap<>();
         body.put("error", message);
+        if (field != null) {
+            body.put("field", field);
+        }
         body.put("status", status);
         answer(resp, status, write(body));
     }

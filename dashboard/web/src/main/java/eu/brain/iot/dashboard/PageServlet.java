@@ -7,9 +7,11 @@ import java.util.Map;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletName;
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardServletPattern;
 
+import jakarta.servlet.Filter;
 import jakarta.servlet.Servlet;
 import jakarta.servlet.http.HttpServlet;
 import jakarta.servlet.http.HttpServletRequest;
@@ -28,9 +30,10 @@ public final class PageServlet extends HttpServlet {
     private static final Map<String, String> TYPES = Map.of("html", "text/html", "js", "text/javascript",
             "css", "text/css", "svg", "image/svg+xml", "png", "image/png", "json", "application/json");
 
+    /** The page starts behind its gate ({@link Gate}): the files are read from this bundle's class loader. */
     @Activate
-    public PageServlet() {
-        // the files are read from this bundle's class loader
+    public PageServlet(@Reference(target = Gate.TARGET) Filter gate) {
+        // the reference only orders the start
     }
 
     @Override

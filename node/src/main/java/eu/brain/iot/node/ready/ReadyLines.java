@@ -31,13 +31,40 @@ final class ReadyLines {
 
     /**
      * The second line, once every level below the shell's is up: {@code fabric node: start levels 1 and 2 up in
-     * 1724 ms (the core, then the edge and its REST API): 40 of 41 bundles active; then level 3: ...}.
+     * 1724 ms (the core, then the edge and its REST API): 40 of 41 bundles active; dashboard: http://...; then
+     * level 3: ...} ({@code whatIsNext} starts with the dashboard's link, {@link #dashboard}, when it runs).
      */
     static String upLine(long millis, int level, Census census, String whatIsNext) {
         String levels = level == 1 ? "start level 1"
                 : level == 2 ? "start levels 1 and 2" : "start levels 1 to " + level;
         return String.format("fabric node: %s up in %d ms (the core, then the edge and its REST API): %s%s", levels,
                 millis, census.describe(), whatIsNext);
+    }
+
+    /** The live dashboard's bundle: the second line links its page when it is active. */
+    static final String DASHBOARD = "eu.brain.iot.dashboard";
+    /** Felix HTTP's framework properties: where it listens (no host: every interface; no port: its default 8080). */
+    static final String HTTP_HOST = "org.apache.felix.http.host";
+    static final String HTTP_PORT = "org.osgi.service.http.port";
+
+    /**
+     * The second line's link to the live dashboard: {@code ; dashboard: http://127.0.0.1:8181/dashboard/}, at the
+     * address Felix HTTP is configured with. Bound to every interface (no host, {@code 0.0.0.0}, {@code ::}) it names
+     * loopback, which such a bind includes and the node's gate always accepts, and says that other machines use a
+     * name of this one.
+     */
+    static String dashboard(String host, String port) {
+        String h = host == null ? "" : host.strip();
+        boolean wildcard = h.isEmpty() || h.equals("0.0.0.0") || h.equals("::") || h.equals("[::]") || h.equals("*");
+        if (wildcard) {
+            h = "127.0.0.1";
+        } else if (h.contains(":") && !h.startsWith("[")) {
+            h = "[" + h + "]"; // an IPv6 literal in a URL
+        }
+        String p = port == null || port.isBlank() ? "8080" : port.strip();
+        return "; dashboard: http://" + h + ":" + p + "/dashboard/"
+                + (wildcard ? " (listening on every interface: from another machine, a name of this one in "
+                        + "allowed.hosts)" : "");
     }
 
     /**

@@ -36,7 +36,8 @@ import eu.brain.iot.eventing.api.EventBus;
  * that are not active. Then it raises the framework's start level, which starts what waits for the core: the
  * edge with its HTTP server, then the Gogo shell, whose prompt thus always comes last, and bundles installed
  * later, at the initial bundle start level. Once every level but the shell's is up it prints a second line,
- * "all bundles active", with its own time, or the bundles that did not start.
+ * "all bundles active", with its own time and, when the live dashboard's bundle is active, its address; or the
+ * bundles that did not start.
  * <p>
  * The node's bndrun starts the framework at start level 1, so the launch is complete when bnd's launcher sets
  * {@code launcher.ready=true} on its service (it does so after starting every run bundle of that level), or,
@@ -358,8 +359,8 @@ public final class ReadyReporter {
                 level);
         if (problems.isEmpty()) {
             Census census = Census.of(bundles, level);
-            System.out.println(ReadyLines.upLine(sinceJvmStart, level, census,
-                    ReadyLines.whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
+            System.out.println(ReadyLines.upLine(sinceJvmStart, level, census, dashboardLink(bundles)
+                    + ReadyLines.whatIsNext(Boolean.parseBoolean(context.getProperty(EXIT_WHEN_READY)),
                             context.getProperty(SHELL_ARGS), shell, census.installed() - census.running())));
         } else {
             System.out.printf("fabric node: started in %d ms WITH PROBLEMS: %s%n", sinceJvmStart,
@@ -370,6 +371,17 @@ public final class ReadyReporter {
         } else if (last > framework.getStartLevel()) {
             framework.setStartLevel(last); // the shell last, so that its prompt follows both lines
         }
+    }
+
+    /** Where the live dashboard is, when its bundle is active; else nothing. */
+    private String dashboardLink(Bundle[] bundles) {
+        for (Bundle bundle : bundles) {
+            if (ReadyLines.DASHBOARD.equals(bundle.getSymbolicName()) && bundle.getState() == Bundle.ACTIVE) {
+                return ReadyLines.dashboard(context.getProperty(ReadyLines.HTTP_HOST),
+                        context.getProperty(ReadyLines.HTTP_PORT));
+            }
+        }
+        return "";
     }
 
     private void exitWith(int status) {

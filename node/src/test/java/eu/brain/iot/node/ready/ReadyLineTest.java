@@ -64,6 +64,24 @@ class ReadyLineTest {
     }
 
     @Test
+    void theSecondLineLinksTheDashboardWhereFelixHttpListens() {
+        assertThat(ReadyLines.upLine(1724, 2, new Census(40, 0, 0, 41), ReadyLines.dashboard("127.0.0.1", "8181")
+                + ReadyLines.whatIsNext(false, "", 3, 1)))
+                .isEqualTo("fabric node: start levels 1 and 2 up in 1724 ms (the core, then the edge and its REST "
+                        + "API): 40 of 41 bundles active; dashboard: http://127.0.0.1:8181/dashboard/; the other one "
+                        + "starts at level 3: the Gogo shell, last so that its prompt follows this line");
+        assertThat(ReadyLines.dashboard("192.168.1.20", "9000"))
+                .isEqualTo("; dashboard: http://192.168.1.20:9000/dashboard/");
+        assertThat(ReadyLines.dashboard("::1", "8181")).isEqualTo("; dashboard: http://[::1]:8181/dashboard/");
+        // a wildcard bind: an address that works on this machine, and a word for the others
+        for (String wildcard : new String[] { null, "", "0.0.0.0", "::" }) {
+            assertThat(ReadyLines.dashboard(wildcard, "8181")).as(wildcard)
+                    .startsWith("; dashboard: http://127.0.0.1:8181/dashboard/ (listening on every interface");
+        }
+        assertThat(ReadyLines.dashboard("127.0.0.1", null)).isEqualTo("; dashboard: http://127.0.0.1:8080/dashboard/");
+    }
+
+    @Test
     void theCheckDeadlineIsConfigurableInSeconds() {
         assertThat(ReadyReporter.checkTimeoutSeconds(null)).isEqualTo(ReadyReporter.DEFAULT_CHECK_TIMEOUT_SECONDS);
         assertThat(ReadyReporter.checkTimeoutSeconds(" 7 ")).isEqualTo(7);

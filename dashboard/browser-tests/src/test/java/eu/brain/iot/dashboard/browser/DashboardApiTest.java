@@ -15,7 +15,7 @@ import java.time.Duration;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
-import org.junit.jupiter.api.AfterAll;
+import org.junit.jupiter.api.AutoClose;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInstance;
@@ -40,7 +40,9 @@ class DashboardApiTest {
     @TempDir
     static Path home;
 
+    @AutoClose
     private RobotSim sim;
+    @AutoClose
     private Node node;
 
     @BeforeAll
@@ -49,22 +51,20 @@ class DashboardApiTest {
         node = new Node(home.resolve("node"), sim.baseUri(), 100, false).start();
     }
 
-    @AfterAll
-    void stop() throws Exception {
-        if (node != null) {
-            node.close();
-        }
-        if (sim != null) {
-            sim.close();
-        }
-    }
-
     @Test
     void answersEveryWrongPathAndMethodWithAJsonError() throws Exception {
         expectError("GET", "dashboard/api/nope", 404, "/dashboard/api/snapshot");
         expectError("GET", "dashboard/nope.js", 404, "/dashboard/");
-        // a path climbing out: Jetty refuses it before any servlet sees it (its own 400 page, not JSON); never served
-        assertThat(send("GET", "dashboard/%2e%2e/web/index.html").statusCode()).isBetween(400, 404);
+        // a path climbing out with an encoded "..": Jetty refuses it before any servlet sees it, never served; with a
+        // JSON error too (the edge's JettySetup installs its JSON error handler on the whole server). A plain ".."
+        // is resolved by Jetty within the server (/dashboard/../x is /x), behind the gate of where it lands.
+        for (String climbing : new String[] { "dashboard/%2e%2e/web/index.html", "dashboard/%2E%2E/%2e%2e/etc/passwd",
+                "dashboard/api/%2e%2e/%2e%2e/sensinact" }) {
+            HttpResponse<String> r = send("GET", climbing);
+            assertThat(r.statusCode()).as(climbing + ": " + r.body()).isEqualTo(400);
+            assertThat(r.headers().firstValue("Content-Type").orElse("")).as(climbing).startsWith("application/json");
+            assertThat(JSON.readTree(r.body()).get("status").asInt()).isEqualTo(400);
+        }
         HttpResponse<String> post = expectError("POST", "dashboard/api/snapshot", 405, "read-only");
         assertThat(post.headers().firstValue("Allow")).contains("GET, HEAD");
         expectError("DELETE", "dashboard/api/stream", 405, "read-only");
@@ -101,13 +101,7 @@ class DashboardApiTest {
 
     private HttpResponse<String> expectError(String method, String path, int status, String saying) throws Exception {
         HttpResponse<String> r = send(method, path);
-        assertThat(r.statusCode()).as(method + " " + path + ": " + r.body()).isEqualTo(status);
-        assertThat(r.headers().firstValue("Content-Type").orElse("")).startsWith("application/json");
-        JsonNode body = JSON.readTree(r.body());
-        assertThat(body.get("status").asInt()).isEqualTo(status);
-        if (saying != null) {
-            assertThat(body.get("error").asText()).contains(saying);
-        }
+        JsonErrors.assertJsonError(r, status, saying);
         return r;
     }
 

@@ -35,6 +35,8 @@ final class Node implements AutoCloseable {
     private final StringBuilder output = new StringBuilder();
     private Process process;
     private boolean shell;
+    /** Whether the node requires its token: it is up once its dashboard refuses a request without one. */
+    private boolean exposed;
 
     /**
      * @param home   a folder of the test's: the node's configuration and framework storage go there
@@ -65,6 +67,17 @@ final class Node implements AutoCloseable {
         return URI.create("http://127.0.0.1:" + port + "/");
     }
 
+    /**
+     * The node requires its API token, as when it is exposed beyond loopback: {@code auth=token} of the edge's REST
+     * configuration (it stays on 127.0.0.1, so the test exposes nothing), with the token kept in {@code tokenFile}.
+     */
+    Node exposed(Path tokenFile) throws IOException {
+        Files.writeString(home.resolve("config").resolve("eu.brain.iot.edge.rest.cfg"),
+                "auth=token\napi.token.file=" + tokenFile + "\n");
+        exposed = true;
+        return this;
+    }
+
     /** The node will read Gogo commands from {@link #type} (else it runs without a shell). */
     Node withShell() {
         shell = true;
@@ -76,7 +89,7 @@ final class Node implements AutoCloseable {
         process.outputWriter(StandardCharsets.UTF_8).append(line).append('\n').flush();
     }
 
-    /** Starts the node and waits until the dashboard answers. */
+    /** Starts the node and waits until the dashboard answers (401 when {@link #exposed}). */
     Node start() throws IOException {
         List<String> command = new ArrayList<>(List.of(Path.of(System.getProperty("java.home"), "bin", "java").toString(),
                 "-Dgosh.args=" + (shell ? "" : "--nointeractive"), "-Dfabric.node.root=" + ROOT,
@@ -94,7 +107,7 @@ final class Node implements AutoCloseable {
         await("the dashboard of the node on port " + port + " answering").atMost(START_DEADLINE)
                 .pollInterval(Duration.ofMillis(200))
                 .failFast("the node exited; its output:\n" + output(), () -> !p.isAlive())
-                .until(() -> status(base().resolve("dashboard/api/snapshot")) == 200);
+                .until(() -> status(base().resolve("dashboard/api/snapshot")) == (exposed ? 401 : 200));
         return this;
     }
 

@@ -16,6 +16,7 @@ import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardFilterAsy
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardFilterName;
 import org.osgi.service.servlet.whiteboard.propertytypes.HttpWhiteboardFilterPattern;
 
+import eu.brain.iot.edge.rest.api.AccessGate;
 import jakarta.servlet.Filter;
 import jakarta.servlet.FilterChain;
 import jakarta.servlet.ServletException;
@@ -31,17 +32,19 @@ import jakarta.servlet.http.HttpServletResponse;
  * DNS rebinding), {@code Origin} must be absent or this server (403: cross-site requests), the caller must be
  * authenticated when the API is exposed (401), and a POST (an ACT, a session) must say {@code Content-Type:
  * application/json} (415: a page cannot send that type across origins without a preflight, which is never granted). It also serves
- * {@code /sensinact/session}, which turns the token into a browser's session cookie ({@link Sessions}).
+ * {@code /sensinact/session}, which turns the token into a browser's session cookie ({@link Sessions}). The node's
+ * other web parts (the dashboard) ask it about their requests as the {@link AccessGate} service: one gate, one token,
+ * one session cookie for the whole node.
  * <p>
  * Threads: container threads, any number at once; every field is immutable after activation or thread-safe.
  */
-@Component(service = Filter.class, configurationPid = RestConfig.PID)
+@Component(service = { Filter.class, AccessGate.class }, configurationPid = RestConfig.PID)
 @HttpWhiteboardFilterName(RequestGate.NAME)
 @HttpWhiteboardFilterPattern({ Route.ROOT, Route.ROOT + "/*" })
 @HttpWhiteboardFilterAsyncSupported // the servlets behind it answer asynchronously
-public final class RequestGate implements Filter {
+public final class RequestGate implements Filter, AccessGate {
 
-    static final String SESSION = Route.ROOT + "/session";
+    static final String SESSION = AccessGate.SESSION_PATH;
     static final String NAME = "eu.brain.iot.edge.rest.gate";
     /** The filter's property, for the servlets' reference: they start only once the gate is there. */
     static final String TARGET = "(osgi.http.whiteboard.filter.name=" + NAME + ")";
@@ -148,7 +151,21 @@ public final class RequestGate implements Filter {
         }
     }
 
+    @Override
+    public Refusal check(HttpServletRequest request, boolean authenticate) {
+        try {
+            enforce(request, authenticate, false); // the caller's resources say what they accept
+            return null;
+        } catch (HttpError e) {
+            return new Refusal(e.status, e.field, e.getMessage());
+        }
+    }
+
     private void check(HttpServletRequest req) {
+        enforce(req, true, true);
+    }
+
+    private void enforce(HttpServletRequest req, boolean authenticate, boolean jsonPosts) {
         if (refusal != null) {
             throw new HttpError(503, refusal);
         }
@@ -163,14 +180,14 @@ public final class RequestGate implements Filter {
             throw HttpError.about(403, "Origin", "cross-origin request refused: Origin '" + origin + "' is not this "
                     + "server (accepted: no Origin, or http:// and one of " + hosts.describe(port) + ")");
         }
-        if (authRequired && !authenticated(req)) {
+        if (authenticate && authRequired && !authenticated(req)) {
             throw HttpError.about(401, "Authorization", "this API is bound to " + where() + " and needs its token: "
                     + "send 'Authorization: Bearer <token>' (the token is in " + token.file + " on the node); "
                     + "a browser first POSTs " + SESSION + " with it and then uses the session cookie");
         }
         // POST is the API's one state change, and the one a page may send cross-site without a preflight (the
         // others, PUT, PATCH, DELETE, need one, which is never granted: they meet 405 or the session's DELETE)
-        if (req.getMethod().equals("POST") && !json(req.getContentType())) {
+        if (jsonPosts && req.getMethod().equals("POST") && !json(req.getContentType())) {
             throw HttpError.about(415, "Content-Type", req.getMethod() + " needs Content-Type: application/json, found "
                     + (req.getContentType() == null ? "none" : "'" + req.getContentType() + "'")
                     + " (with curl: -H 'Content-Type: application/json')");
@@ -214,7 +231,7 @@ public final class RequestGate implements Filter {
                 String id = sessions.open();
                 resp.addHeader("Set-Cookie", sessions.cookie(id, false));
                 body.put("session", "opened: the cookie " + Sessions.COOKIE + " authenticates this browser on "
-                        + Route.ROOT + (authRequired ? "" : " (not needed while the API is bound to loopback)"));
+                        + "the whole node (" + Route.ROOT + ", /dashboard)" + (authRequired ? "" : " (not needed while the API is bound to loopback)"));
             }
             case "DELETE" -> {
                 sessions.close(sessionId(req));

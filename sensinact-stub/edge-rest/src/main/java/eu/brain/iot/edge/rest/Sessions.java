@@ -10,7 +10,8 @@ import java.util.concurrent.ConcurrentHashMap;
 /**
  * Browser sessions: a browser cannot put a bearer token on an {@code EventSource}, so {@code POST /sensinact/session}
  * with the token gives it a random session id in an HttpOnly, SameSite=Strict cookie, accepted by every endpoint
- * until it expires. Kept in memory (a restart logs browsers out); at most {@value #MAX} at once, the expired ones
+ * until it expires. Its path is {@code /}: the same session authenticates the node's other web parts (the dashboard,
+ * through {@link eu.brain.iot.edge.rest.api.AccessGate}). Kept in memory (a restart logs browsers out); at most {@value #MAX} at once, the expired ones
  * dropped first, then the oldest.
  * <p>
  * Threads: any container thread; the map is concurrent and each operation stands alone.
@@ -60,7 +61,7 @@ final class Sessions {
 
     /** The Set-Cookie value of a session (empty id and age 0: the cookie is removed). */
     String cookie(String id, boolean remove) {
-        return COOKIE + "=" + (remove ? "" : id) + "; Path=" + Route.ROOT + "; Max-Age="
+        return COOKIE + "=" + (remove ? "" : id) + "; Path=/; Max-Age="
                 + (remove ? 0 : maxAge.toSeconds()) + "; HttpOnly; SameSite=Strict";
     }
 

@@ -100,7 +100,7 @@ class AuthIntegrationTest extends RestTestBase {
         assertThat(session.statusCode()).as(session.body()).isEqualTo(200);
         String setCookie = session.headers().firstValue("Set-Cookie").orElseThrow();
         assertThat(setCookie).startsWith("brain-iot-session=").contains("HttpOnly", "SameSite=Strict",
-                "Path=/sensinact");
+                "Path=/;");
         String cookie = setCookie.substring(0, setCookie.indexOf(';'));
 
         HttpResponse<Stream<String>> stream = HTTP.send(request("/sensinact/subscribe?provider=robot1")
