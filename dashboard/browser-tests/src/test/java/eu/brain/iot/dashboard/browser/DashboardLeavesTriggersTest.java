@@ -42,8 +42,8 @@ class DashboardLeavesTriggersTest {
 
     @Test
     void aNodeWithTheDashboardStillInstallsTheRobotBehaviourOnDemand() throws Exception {
-        List<List<String>> behaviours = behaviourConsumedTypes();
-        assertThat(behaviours).anySatisfy(types -> assertThat(types).contains(ROBOT_TRIGGER));
+        List<List<String>> behaviourTypes = behaviourConsumedTypes();
+        assertThat(behaviourTypes).anySatisfy(types -> assertThat(types).contains(ROBOT_TRIGGER));
         try (RobotSim sim = RobotSim.start(SimConfig.builder().manualStep(true).build());
                 Node node = new Node(home.resolve("node"), sim.baseUri(), 500, true).withShell().start()) {
             List<String> consumed = new ArrayList<>();
@@ -51,7 +51,7 @@ class DashboardLeavesTriggersTest {
             assertThat(consumed).isNotEmpty().doesNotContain(ROBOT_TRIGGER,
                     "eu.brain.iot.edge.api.RobotPositionChanged", "eu.brain.iot.edge.api.DoorStateChanged",
                     "eu.brain.iot.edge.api.RobotEvent", "eu.brain.iot.behaviours.events.ConnectorResolveCollisionOffer");
-            for (List<String> types : behaviours) {
+            for (List<String> types : behaviourTypes) {
                 assertThat(types).as("a behaviour's consumed types, not all taken by the dashboard")
                         .isNotEmpty().anySatisfy(t -> assertThat(consumed).doesNotContain(t));
             }
