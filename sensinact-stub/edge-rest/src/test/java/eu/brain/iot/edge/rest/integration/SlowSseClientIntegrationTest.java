@@ -13,6 +13,10 @@ import java.util.Collections;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
 import java.util.stream.Stream;
 
 import org.junit.jupiter.api.Test;
@@ -24,6 +28,8 @@ import org.osgi.test.common.annotation.InjectService;
 /**
  * A stream client that never reads is disconnected once the connection has taken nothing for
  * {@code sse.write.timeout.ms}, and logged once at warn with its address; a reading client is not disturbed.
+ * Changes flowing at a modest rate find it within seconds too: the connection's send buffer is bounded
+ * ({@code send.buffer.bytes}), where the kernel would grow it to megabytes before the write timeout could start.
  */
 class SlowSseClientIntegrationTest extends RestTestBase {
 
@@ -64,6 +70,45 @@ class SlowSseClientIntegrationTest extends RestTestBase {
                 assertThat(e.getMessage()).contains("not reading", "sse.write.timeout.ms");
             });
             reader.body().close();
+        }
+    }
+
+    @Test
+    void aClientThatNeverReadsIsFoundWithinSecondsAtAModestRate() throws Exception {
+        configure(Map.of("sse.write.timeout.ms", 500L, "sse.queue.capacity", 200_000));
+        String x = "x".repeat(500);
+        ScheduledExecutorService changes = Executors.newSingleThreadScheduledExecutor();
+        try (Socket stalled = new Socket()) {
+            stalled.setReceiveBufferSize(4_096);
+            stalled.connect(new InetSocketAddress(base.getHost(), base.getPort()), 5_000);
+            stalled.getOutputStream().write(("GET /sensinact/subscribe?provider=robot1 HTTP/1.1\r\n"
+                    + RawHttp.host(base) + "\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+            String who = "SSE client 127.0.0.1:" + stalled.getLocalPort() + " ";
+
+            List<String> received = new CopyOnWriteArrayList<>();
+            HttpResponse<Stream<String>> reader = HTTP.send(HttpRequest.newBuilder(uri("/sensinact/subscribe?provider=robot1"))
+                    .timeout(Duration.ofSeconds(30)).build(), HttpResponse.BodyHandlers.ofLines());
+            Thread t = new Thread(() -> reader.body().forEach(received::add), "sse-test-reader");
+            t.setDaemon(true);
+            t.start();
+            await().atMost(DEADLINE).until(() -> model.subscribers() == 2);
+
+            // about 50 KB/s: the kernel's self-grown buffers (up to 4 MB on Linux) would take over a minute to fill
+            AtomicInteger sent = new AtomicInteger();
+            changes.scheduleAtFixedRate(() -> model.emit(ScriptedModel.value("robot1", "position", "x",
+                    x + sent.incrementAndGet())), 0, 10, TimeUnit.MILLISECONDS);
+            await("the stalled client is found within seconds").atMost(Duration.ofSeconds(15))
+                    .until(() -> logged(who));
+            int before = sent.get();
+            await("the reading client still gets changes").atMost(DEADLINE)
+                    .until(() -> received.stream().anyMatch(l -> l.contains(x + (before + 1) + "\"")));
+            assertThat(entries(who)).hasSize(1).allSatisfy(e -> {
+                assertThat(e.getLogLevel()).isEqualTo(LogLevel.WARN);
+                assertThat(e.getMessage()).contains("not reading", "sse.write.timeout.ms");
+            });
+            reader.body().close();
+        } finally {
+            changes.shutdownNow();
         }
     }
 
