@@ -41,20 +41,10 @@ class SlowSseClientIntegrationTest extends RestTestBase {
         // a queue large enough that the write timeout, not the queue, finds the client
         configure(Map.of("sse.write.timeout.ms", 500L, "sse.queue.capacity", 200_000));
         String x = "x".repeat(2_000);
-        try (Socket stalled = new Socket()) {
-            stalled.setReceiveBufferSize(4_096); // before connecting: the window it offers stays small
-            stalled.connect(new InetSocketAddress(base.getHost(), base.getPort()), 5_000);
-            stalled.getOutputStream().write(("GET /sensinact/subscribe?provider=robot1 HTTP/1.1\r\n"
-                    + RawHttp.host(base) + "\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+        try (Socket stalled = stalledSubscriber()) {
             String who = "SSE client 127.0.0.1:" + stalled.getLocalPort() + " ";
-
             List<String> received = new CopyOnWriteArrayList<>();
-            HttpResponse<Stream<String>> reader = HTTP.send(HttpRequest.newBuilder(uri("/sensinact/subscribe?provider=door1"))
-                    .timeout(Duration.ofSeconds(15)).build(), HttpResponse.BodyHandlers.ofLines());
-            Thread t = new Thread(() -> reader.body().forEach(received::add), "sse-test-reader");
-            t.setDaemon(true);
-            t.start();
-            await().atMost(DEADLINE).until(() -> model.subscribers() == 2);
+            HttpResponse<Stream<String>> reader = reading("door1", received);
 
             // megabytes for the stalled client: more than the socket buffers on both sides hold
             for (int i = 0; i < 8_000 && !logged(who); i++) {
@@ -78,20 +68,10 @@ class SlowSseClientIntegrationTest extends RestTestBase {
         configure(Map.of("sse.write.timeout.ms", 500L, "sse.queue.capacity", 200_000));
         String x = "x".repeat(500);
         ScheduledExecutorService changes = Executors.newSingleThreadScheduledExecutor();
-        try (Socket stalled = new Socket()) {
-            stalled.setReceiveBufferSize(4_096);
-            stalled.connect(new InetSocketAddress(base.getHost(), base.getPort()), 5_000);
-            stalled.getOutputStream().write(("GET /sensinact/subscribe?provider=robot1 HTTP/1.1\r\n"
-                    + RawHttp.host(base) + "\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+        try (Socket stalled = stalledSubscriber()) {
             String who = "SSE client 127.0.0.1:" + stalled.getLocalPort() + " ";
-
             List<String> received = new CopyOnWriteArrayList<>();
-            HttpResponse<Stream<String>> reader = HTTP.send(HttpRequest.newBuilder(uri("/sensinact/subscribe?provider=robot1"))
-                    .timeout(Duration.ofSeconds(30)).build(), HttpResponse.BodyHandlers.ofLines());
-            Thread t = new Thread(() -> reader.body().forEach(received::add), "sse-test-reader");
-            t.setDaemon(true);
-            t.start();
-            await().atMost(DEADLINE).until(() -> model.subscribers() == 2);
+            HttpResponse<Stream<String>> reader = reading("robot1", received);
 
             // about 50 KB/s: the kernel's self-grown buffers (up to 4 MB on Linux) would take over a minute to fill
             AtomicInteger sent = new AtomicInteger();
@@ -110,6 +90,27 @@ class SlowSseClientIntegrationTest extends RestTestBase {
         } finally {
             changes.shutdownNow();
         }
+    }
+
+    /** A subscriber to robot1 with a 4 KB receive buffer that never reads. */
+    private static Socket stalledSubscriber() throws Exception {
+        Socket stalled = new Socket();
+        stalled.setReceiveBufferSize(4_096); // before connecting: the window it offers stays small
+        stalled.connect(new InetSocketAddress(base.getHost(), base.getPort()), 5_000);
+        stalled.getOutputStream().write(("GET /sensinact/subscribe?provider=robot1 HTTP/1.1\r\n"
+                + RawHttp.host(base) + "\r\n\r\n").getBytes(StandardCharsets.UTF_8));
+        return stalled;
+    }
+
+    /** A second subscriber, to that provider, whose lines a daemon thread adds to {@code received}; both subscribed. */
+    private static HttpResponse<Stream<String>> reading(String provider, List<String> received) throws Exception {
+        HttpResponse<Stream<String>> reader = HTTP.send(HttpRequest.newBuilder(uri("/sensinact/subscribe?provider="
+                + provider)).timeout(Duration.ofSeconds(30)).build(), HttpResponse.BodyHandlers.ofLines());
+        Thread t = new Thread(() -> reader.body().forEach(received::add), "sse-test-reader");
+        t.setDaemon(true);
+        t.start();
+        await().atMost(DEADLINE).until(() -> model.subscribers() == 2);
+        return reader;
     }
 
     private static boolean logged(String who) {
