@@ -48,6 +48,9 @@ class EdgeStartsOnceIntegrationTest {
     void theEdgeStartsOnceWhateverItsUsersAndConfigurationDo() throws Exception {
         ComponentDescriptionDTO edge = scr.getComponentDescriptionDTOs().stream()
                 .filter(d -> d.name.equals("eu.brain.iot.edge.impl.EdgeComponent")).findFirst().orElseThrow();
+        // here the REST API holds the edge from the start, so a delayed edge would pass what follows: the node's
+        // boot let go of it (NodeLogTest counts its starts there); an immediate component is never disposed for that
+        assertThat(edge.immediate).as("the edge is started at once, not for its first user").isTrue();
         await("the edge active with no user asking for it").atMost(EdgeTestSupport.DEADLINE)
                 .until(() -> scr.getComponentConfigurationDTOs(edge).stream()
                         .anyMatch(c -> c.state == ComponentConfigurationDTO.ACTIVE));
