@@ -44,6 +44,19 @@ class NodeLogTest {
     }
 
     /**
+     * The edge starts once per boot: one "edge polling the fleet" line once every level is up. (As a delayed
+     * component it was built for its first user, disposed of when that user let go, and built again.)
+     */
+    @Test
+    void theEdgeStartsOncePerBoot() throws Exception {
+        try (Socket noFleet = closedPort(); NodeProcess node = start()) {
+            node.awaitOutput("fabric node: start levels 1 and 2 up in ");
+            await("no second start").during(Duration.ofSeconds(1)).atMost(Duration.ofSeconds(3))
+                    .until(() -> node.output().split(POLLING, -1).length - 1 == 1);
+        }
+    }
+
+    /**
      * With the simulated fleet (robot-sim's jar, built before the node): a robot taken offline is reported unreachable
      * (WARN), and its recovery at INFO, both on the console.
      */

@@ -34,9 +34,13 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * new configuration is applied in place (devices added and removed, nothing restarted). It registers API types
  * only (the edge's and the eventing API's) and depends on the framework-free core ({@link Edge}), never the other
  * way.
+ * <p>
+ * Immediate: it polls the fleet whether or not anyone uses its services yet. (As a delayed component, SCR built it
+ * for its first user and threw it away when that user let go, at every boot: the event bus looks behaviours up
+ * before the REST API binds the device model, so the edge started twice and its first poll raced its closing.)
  */
 @Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class },
-        configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
+        configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL, immediate = true)
 @SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
         description = "Performs robot and door commands over the fleet's REST API")
 @Designate(ocd = EdgeConfig.class)

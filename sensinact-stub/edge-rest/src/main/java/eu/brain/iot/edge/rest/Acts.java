@@ -42,6 +42,8 @@ final class Acts {
     private final long bodyTimeoutMillis;
     private final ScheduledExecutorService timer;
     private final Logger log;
+    /** Slow bodies refused: one short line per client address a minute, however many it sends. */
+    private final RefusalLog refusals;
 
     /**
      * @param timer runs the body deadlines and nothing that waits (owned by the caller, which shuts it down)
@@ -54,6 +56,7 @@ final class Acts {
         this.bodyTimeoutMillis = bodyTimeoutMillis;
         this.timer = timer;
         this.log = log;
+        this.refusals = new RefusalLog(log, 60_000, System::nanoTime);
     }
 
     /**
@@ -89,6 +92,7 @@ final class Acts {
             }
         });
         AtomicReference<ScheduledFuture<?>> deadline = new AtomicReference<>();
+        String client = req.getRemoteAddr();
         BodyReader reader = new BodyReader(req.getInputStream(), maxBodyBytes, body -> {
             cancel(deadline);
             try {
@@ -109,6 +113,8 @@ final class Acts {
             if (reader.abandon()) {
                 HttpError e = HttpError.closing(408, "body", "the body did not arrive within " + bodyTimeoutMillis
                         + " ms (act.body.timeout.ms); send the whole request at once");
+                refusals.refused(client, "408, an ACT's body did not arrive within " + bodyTimeoutMillis
+                        + " ms (act.body.timeout.ms)");
                 startQuietly(async, () -> answer(async, answered, e));
             }
         }, bodyTimeoutMillis, TimeUnit.MILLISECONDS));

@@ -59,4 +59,9 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     @AttributeDefinition(description = "Connections one client address may keep open at once; more are closed as "
             + "they open")
     int max_connections_per_client() default 64;
+
+    @AttributeDefinition(description = "Send buffer of every connection Jetty accepts (bytes; the kernel may double "
+            + "it); bounds what a client that stopped reading can hold back, so sse.write.timeout.ms finds it within "
+            + "seconds instead of after the kernel's self-grown buffers (megabytes) fill; 0 leaves it to the kernel")
+    int send_buffer_bytes() default 32_768;
 }
