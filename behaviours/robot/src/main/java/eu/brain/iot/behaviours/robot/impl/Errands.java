@@ -43,10 +43,17 @@ final class Errands {
     }
 
     private final Map<String, Errand> errands = new HashMap<>();
+    /** Robots that may go for carts at once (the wave's size). */
+    private final int wave;
     private final Map<String, Cell> docks = new HashMap<>();
     /** Storage cells given to a cart being carried there. */
     private final Set<Cell> drops = new HashSet<>();
     private int delivered;
+
+    /** @param wave robots that may go for carts at once (at least 1) */
+    Errands(int wave) {
+        this.wave = Math.max(1, wave);
+    }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
     synchronized void seen(String robot, Cell cell, boolean docking) {
@@ -64,8 +71,25 @@ final class Errands {
         return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));
     }
 
-    /** Claims the nearest waiting cart for a robot without an errand. */
+    /**
+     * The door policy: carts are fetched in waves, so the robots cross the door in one direction at a time. A robot
+     * may claim a cart while no robot carries one (the wave has not started back: no robot comes up through the door
+     * against the robots going down) and fewer than {@code wave} robots go for carts. Once a robot lifts its cart,
+     * no new claim until every cart of the wave is placed in storage; then the next wave goes down.
+     *
+     * @return whether a robot without an errand may claim a cart now
+     */
+    synchronized boolean waveOpen() {
+        long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
+        boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
+        return !carrying && toCart < wave;
+    }
+
+    /** Claims the nearest waiting cart for a robot without an errand, when the wave is open ({@link #waveOpen}). */
     synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
+        if (!waveOpen()) {
+            return Optional.empty();
+        }
         CartState best = null;
         int bestSteps = Integer.MAX_VALUE;
         for (CartState c : carts) {

@@ -43,7 +43,7 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * <pre>
  * P        condition (edge)                                               port event             data
  * START    s.detect != door, or the door ahead is closed; e has a goal    unloadLocation         area(s), 0
- *          or a cart waits for a robot
+ *          or a cart waits for a robot and the wave is open (Errands)
  * UNLOAD   s moved to another cell                                        unloadToUnload         area(s), 0
  * UNLOAD   s stopped in front of a closed door (detect 2)                 fromUnloadObstacle     area(s), isDoor
  * UNLOAD   s stopped behind a robot (detect 1) for patience polls         fromUnloadObstacle     area(s), isObstacle
@@ -206,7 +206,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             case "START" -> {
                 boolean waitsAtOpeningDoor = s.detect() == 2 && !doorAheadClosed(s);
                 if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
-                        || fleet.workLeft())) {
+                        || fleet.mayStart())) {
                     unloadLocation(in, area);
                 }
             }

@@ -42,7 +42,7 @@ public final class RobotFleet {
     private final FleetView view;
     private final CommandLedger ledger;
     private final RobotCommands commands;
-    private final Errands errands = new Errands();
+    private final Errands errands;
     private final int retries;
     /**
      * The goal of the last go-to sent to each robot and when, until that mission ends (so it is never sent twice);
@@ -66,6 +66,7 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
+        this.errands = new Errands(config.wave_robots());
         double speed = config.speed() > 0 ? config.speed() : 1;
         this.pendingNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) * 8
                 / speed);
@@ -181,6 +182,11 @@ public final class RobotFleet {
     boolean workLeft() {
         Optional<Grid> grid = view.grid();
         return grid.isPresent() && errands.workLeft(view.carts(), grid.get());
+    }
+
+    /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
+    boolean mayStart() {
+        return errands.waveOpen() && workLeft();
     }
 
     /** The robot is docked: its errand is over. */
