@@ -14,12 +14,13 @@ import eu.brain.iot.behaviours.warehouse.Grid;
 /**
  * The errands of every robot and the claim table that keeps two robots from going for the same cart. One table is
  * enough because every robot instance of the model lives in one behaviour component (the generated
- * {@code RobotBehaviorBehaviour} hosts Robot1..3), whose extern functions this bundle registers once.
+ * {@code RobotBehaviorBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
  * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
- * outside storage that is nearest by path; when it lifts it, it is given the nearest free storage cell that a robot
- * carrying a cart can reach around the other carts and whose cart will not wall in another free storage cell; after
- * placing it, it heads for its dock (the docking cell where it was first seen).
+ * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given
+ * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart will not wall in
+ * another free storage cell, and that makes the rest of the trip shortest (the path there plus the distance from it
+ * to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
  * <p>
  * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
  * another lock while holding its own).
@@ -123,6 +124,12 @@ final class Errands {
                 continue;
             }
             int steps = grid.steps(at, c, floor);
+            if (steps == Integer.MAX_VALUE) {
+                continue;
+            }
+            // the rest of the trip counts too: a storage cell on the way home (near the dock's column) keeps the
+            // robots' ways home short and apart, instead of every robot crossing the docking rows to its dock
+            steps += e.dock() == null ? 0 : c.distance(e.dock());
             if (steps < bestSteps) {
                 best = c;
                 bestSteps = steps;
