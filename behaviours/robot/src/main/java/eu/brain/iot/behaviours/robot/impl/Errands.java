@@ -86,6 +86,11 @@ final class Errands {
         return !carrying && toCart < wave;
     }
 
+    /** @return the errands of the robots going for a cart (copies) */
+    synchronized List<Errand> goingForCarts() {
+        return errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).toList();
+    }
+
     /** Claims the nearest waiting cart for a robot without an errand, when the wave is open ({@link #waveOpen}). */
     synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
         if (!waveOpen()) {

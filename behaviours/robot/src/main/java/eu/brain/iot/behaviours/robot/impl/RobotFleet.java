@@ -122,6 +122,9 @@ public final class RobotFleet {
             e = errands.lifted(robot, s.cell(), view.carts(), grid.get()).orElse(e); // a storage cell at last?
         }
         Cell goal = e.goal() != null ? e.goal() : e.leg() == Errands.Leg.TO_STORAGE ? null : e.dock();
+        if (e.leg() == Errands.Leg.TO_STORAGE && !mayCarryBack(robot)) {
+            return; // the wave's last robots still come down through the door: it waits with its cart
+        }
         if (goal != null) {
             goTo(robot, s, goal, why);
         }
@@ -162,6 +165,11 @@ public final class RobotFleet {
             return;
         }
         sentGoal.remove(robot);
+        if (!mayCarryBack(robot)) {
+            LOG.log(System.Logger.Level.INFO, "{0} waits with {1} until the wave''s robots are down", robot,
+                    e.get().cart());
+            return; // the binding sends it on (resume) once they are
+        }
         goTo(robot, s.get(), e.get().drop(), "carrying " + e.get().cart() + " to storage");
     }
 
@@ -182,6 +190,25 @@ public final class RobotFleet {
     boolean workLeft() {
         Optional<Grid> grid = view.grid();
         return grid.isPresent() && errands.workLeft(view.carts(), grid.get());
+    }
+
+    /**
+     * The door policy's second half: a robot carrying a cart back through the door sets off only once every robot
+     * of the wave going for a cart is down (in the unload area, or at its cart), so the door is crossed one way at a
+     * time ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited for.
+     */
+    boolean mayCarryBack(String robot) {
+        for (Errands.Errand e : errands.goingForCarts()) {
+            if (e.robot().equals(robot)) {
+                continue;
+            }
+            Optional<RobotState> s = view.robot(e.robot());
+            if (s.isPresent() && s.get().reachable() && s.get().area() != Grid.UNLOAD
+                    && !s.get().cell().equals(e.cartCell())) {
+                return false;
+            }
+        }
+        return true;
     }
 
     /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
