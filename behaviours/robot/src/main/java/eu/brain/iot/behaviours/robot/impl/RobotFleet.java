@@ -1,5 +1,6 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
@@ -198,17 +199,23 @@ public final class RobotFleet {
      * time ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited for.
      */
     boolean mayCarryBack(String robot) {
+        List<RobotState> robots = view.robots();
         for (Errands.Errand e : errands.goingForCarts()) {
             if (e.robot().equals(robot)) {
                 continue;
             }
             Optional<RobotState> s = view.robot(e.robot());
             if (s.isPresent() && s.get().reachable() && s.get().area() != Grid.UNLOAD
-                    && !s.get().cell().equals(e.cartCell())) {
+                    && !s.get().cell().equals(e.cartCell()) && !behindACarrier(s.get(), robots)) {
                 return false;
             }
         }
         return true;
+    }
+
+    /** A robot stopped behind one carrying a cart does not hold the carriers back: the one in its way must move. */
+    private static boolean behindACarrier(RobotState s, List<RobotState> robots) {
+        return s.detect() == 1 && robots.stream().anyMatch(o -> o.cell().equals(s.ahead()) && o.carrying());
     }
 
     /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
