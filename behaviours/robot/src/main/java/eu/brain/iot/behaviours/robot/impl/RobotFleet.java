@@ -196,11 +196,16 @@ public final class RobotFleet {
     /**
      * The door policy's second half: a robot carrying a cart back through the door sets off only once every robot
      * of the wave going for a cart is down (in the unload area, or at its cart), so the door is crossed one way at a
-     * time ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited for.
+     * time, when more than three robots (one group's worth) still go for carts: fewer meet at the door as in the
+     * paper's warehouse, and the orchestrator resolves their meetings ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited for.
      */
     boolean mayCarryBack(String robot) {
+        List<Errands.Errand> down = errands.goingForCarts();
+        if (down.size() <= eu.brain.iot.behaviours.warehouse.RobotNames.PER_GROUP) {
+            return true; // up to one group's worth of meetings at the door: the orchestrator resolves them (Listing 7)
+        }
         List<RobotState> robots = view.robots();
-        for (Errands.Errand e : errands.goingForCarts()) {
+        for (Errands.Errand e : down) {
             if (e.robot().equals(robot)) {
                 continue;
             }
