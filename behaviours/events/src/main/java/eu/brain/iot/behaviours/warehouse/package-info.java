@@ -4,7 +4,7 @@
  * Hand-written, shared by the robot, door and orchestrator bundles; no dependency on the edge.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package eu.brain.iot.behaviours.warehouse;
 
 import org.osgi.annotation.bundle.Export;

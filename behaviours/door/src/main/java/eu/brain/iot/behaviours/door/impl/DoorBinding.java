@@ -26,7 +26,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  *
  * <pre>
  * place  condition (edge)                                                   port event / command
- * OPEN   DoorStateChanged to closed (or the door is closed when looked at)  closed (DoorBehaviorClosed)
+ * OPEN   DoorStateChanged to closed (or the door is closed when looked at)  closed (DoorBehaviorClosed), to
+ *                                                                           every group whose door model is OPEN
  * any    an open door with no robot within near.cells of it for             CloseDoorCommand
  *        close.after.polls looks in a row
  * </pre>
@@ -90,13 +91,22 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
         });
     }
 
-    /** The model's door is OPEN and the real door closed: the model follows ({@code closed}). */
+    /**
+     * The real door is closed: every group whose door model is OPEN follows ({@code closed}, to that group). Each
+     * group has its own {@code DoorInstance} (bip/README, "Groups"), all standing for the one real door.
+     */
     private void closedWhenOpenInModel(boolean closed) {
-        List<String> places = model.placesOf("DoorInstance");
-        if (closed && places != null && places.contains("OPEN")) {
-            DoorBehaviorClosed e = new DoorBehaviorClosed();
-            e.component = "DoorInstance";
-            bus.deliver(e);
+        if (!closed) {
+            return;
+        }
+        for (String group : model.groups()) {
+            List<String> places = model.placesOf(group, "DoorInstance");
+            if (places != null && places.contains("OPEN")) {
+                DoorBehaviorClosed e = new DoorBehaviorClosed();
+                e.group = group.isEmpty() ? null : group;
+                e.component = "DoorInstance";
+                bus.deliver(e);
+            }
         }
     }
 

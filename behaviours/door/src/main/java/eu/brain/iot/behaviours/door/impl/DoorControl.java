@@ -11,6 +11,7 @@ import org.osgi.service.component.annotations.Reference;
 import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.behaviours.warehouse.FleetView;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
+import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CloseDoorCommand;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -22,8 +23,8 @@ import eu.brain.iot.eventing.api.EventBus;
 /**
  * The only place that sends doors commands (edge command events with a commandId, each outcome checked: a refusal
  * is logged with the door and the reason, counted, and an opening is asked again once). Which door opens: the door
- * in front of a robot stopped at a closed door (the robot that broadcast {@code openDoor}, Listing 6), else the
- * door nearest to any robot. Thread-safe: the view and the ledger are.
+ * in front of a robot of the asking group stopped at a closed door (the robot that broadcast {@code openDoor},
+ * Listing 6), else the door nearest to one of the group's robots. Thread-safe: the view and the ledger are.
  */
 @Component(service = DoorControl.class)
 public final class DoorControl {
@@ -43,10 +44,10 @@ public final class DoorControl {
         return view;
     }
 
-    /** Opens the door a robot waits at. */
-    void openForWaitingRobot() {
+    /** Opens the door a robot of the group waits at (else the door nearest to one of its robots). */
+    void openForWaitingRobot(String group) {
         List<DoorState> doors = view.doors();
-        List<RobotState> robots = view.robots();
+        List<RobotState> robots = view.robots().stream().filter(r -> RobotNames.inGroup(r.id(), group)).toList();
         Optional<DoorState> door = robots.stream().filter(r -> r.detect() == 2)
                 .flatMap(r -> doors.stream().filter(d -> d.cell().equals(r.ahead()))).findFirst();
         if (door.isEmpty()) {

@@ -7,12 +7,15 @@ import org.osgi.service.component.annotations.ReferencePolicy;
 import org.osgi.service.component.annotations.ReferencePolicyOption;
 
 import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorExterns;
+import eu.brain.iot.behaviours.warehouse.ModelInstance;
 
 /**
- * The orchestrator model's collision resolution: resolvedPositionK for the model's RobotK (the fleet's robotK of
- * group g1), by the rule of {@link CollisionGeometry}. A position 0 is a robot not in the interaction (the subset
+ * The orchestrator model's collision resolution: resolvedPositionK for the model's RobotK of the group named by the
+ * last {@link #bipInstance} on the calling thread (RobotK of group gN is the fleet's robot{@code 3(N-1)+K},
+ * {@link ModelInstance}), by the rule of {@link CollisionGeometry}. A position 0 is a robot not in the interaction (the subset
  * rendezvous of Warehouse.bip): it stays 0. Without an edge (the model on a bus alone) every robot concerned keeps
- * its position (waits, then goes on). Thread-safe: the geometry reference is volatile, the geometry thread-safe.
+ * its position (waits, then goes on). Thread-safe: the geometry reference is volatile,
+ * the geometry thread-safe, the instance kept per thread.
  */
 @Component(service = OrchestratorBehaviorExterns.class)
 public class OrchestratorExterns implements OrchestratorBehaviorExterns {
@@ -21,12 +24,19 @@ public class OrchestratorExterns implements OrchestratorBehaviorExterns {
             policyOption = ReferencePolicyOption.GREEDY)
     volatile CollisionGeometry geometry;
 
+    private final ModelInstance instance = new ModelInstance();
+
+    @Override
+    public void bipInstance(String group, String component) {
+        instance.set(group, component);
+    }
+
     private double resolve(int k, double position) {
         CollisionGeometry g = geometry;
         if (position == 0 || g == null) {
             return position;
         }
-        return g.resolve("robot" + k, position);
+        return g.resolve(instance.robotId(k), position);
     }
 
     @Override

@@ -14,12 +14,13 @@ import eu.brain.iot.behaviours.warehouse.Grid;
 /**
  * The errands of every robot and the claim table that keeps two robots from going for the same cart. One table is
  * enough because every robot instance of the model lives in one behaviour component (the generated
- * {@code RobotBehaviorBehaviour} hosts Robot1..3), whose extern functions this bundle registers once.
+ * {@code RobotBehaviorBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
  * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
- * outside storage that is nearest by path; when it lifts it, it is given the nearest free storage cell that a robot
- * carrying a cart can reach around the other carts and whose cart will not wall in another free storage cell; after
- * placing it, it heads for its dock (the docking cell where it was first seen).
+ * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given
+ * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart will not wall in
+ * another free storage cell, and that makes the rest of the trip shortest (the path there plus the distance from it
+ * to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
  * <p>
  * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
  * another lock while holding its own).
@@ -43,10 +44,17 @@ final class Errands {
     }
 
     private final Map<String, Errand> errands = new HashMap<>();
+    /** Robots that may go for carts at once (the wave's size). */
+    private final int wave;
     private final Map<String, Cell> docks = new HashMap<>();
     /** Storage cells given to a cart being carried there. */
     private final Set<Cell> drops = new HashSet<>();
     private int delivered;
+
+    /** @param wave robots that may go for carts at once (at least 1) */
+    Errands(int wave) {
+        this.wave = Math.max(1, wave);
+    }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
     synchronized void seen(String robot, Cell cell, boolean docking) {
@@ -64,8 +72,30 @@ final class Errands {
         return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));
     }
 
-    /** Claims the nearest waiting cart for a robot without an errand. */
+    /**
+     * The door policy: carts are fetched in waves, so the robots cross the door in one direction at a time. A robot
+     * may claim a cart while no robot carries one (the wave has not started back: no robot comes up through the door
+     * against the robots going down) and fewer than {@code wave} robots go for carts. Once a robot lifts its cart,
+     * no new claim until every cart of the wave is placed in storage; then the next wave goes down.
+     *
+     * @return whether a robot without an errand may claim a cart now
+     */
+    synchronized boolean waveOpen() {
+        long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
+        boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
+        return !carrying && toCart < wave;
+    }
+
+    /** @return the errands of the robots going for a cart (copies) */
+    synchronized List<Errand> goingForCarts() {
+        return errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).toList();
+    }
+
+    /** Claims the nearest waiting cart for a robot without an errand, when the wave is open ({@link #waveOpen}). */
     synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
+        if (!waveOpen()) {
+            return Optional.empty();
+        }
         CartState best = null;
         int bestSteps = Integer.MAX_VALUE;
         for (CartState c : carts) {
@@ -99,6 +129,12 @@ final class Errands {
                 continue;
             }
             int steps = grid.steps(at, c, floor);
+            if (steps == Integer.MAX_VALUE) {
+                continue;
+            }
+            // the rest of the trip counts too: a storage cell on the way home (near the dock's column) keeps the
+            // robots' ways home short and apart, instead of every robot crossing the docking rows to its dock
+            steps += e.dock() == null ? 0 : c.distance(e.dock());
             if (steps < bestSteps) {
                 best = c;
                 bestSteps = steps;

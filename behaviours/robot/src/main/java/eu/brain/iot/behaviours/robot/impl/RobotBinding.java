@@ -43,7 +43,7 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * <pre>
  * P        condition (edge)                                               port event             data
  * START    s.detect != door, or the door ahead is closed; e has a goal    unloadLocation         area(s), 0
- *          or a cart waits for a robot
+ *          or a cart waits for a robot and the wave is open (Errands)
  * UNLOAD   s moved to another cell                                        unloadToUnload         area(s), 0
  * UNLOAD   s stopped in front of a closed door (detect 2)                 fromUnloadObstacle     area(s), isDoor
  * UNLOAD   s stopped behind a robot (detect 1) for patience polls         fromUnloadObstacle     area(s), isObstacle
@@ -57,7 +57,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * </pre>
  *
  * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
- * ({@link RobotNames}); until the behaviours host one compound per group, robots beyond robot3 are not driven.
+ * ({@link RobotNames}): every port event names the robot's group, so the generated behaviour drives each robot by its
+ * group's copy of Listing 4 (created by the group's first event, an {@code unloadLocation}: until then the binding
+ * reads the robot's place as START).
  * Command outcomes go to {@link RobotFleet#outcome}; mission ends clear its pending go-tos. A robot the edge cannot
  * reach gets no event until it answers again, then goes on where it was.
  * <p>
@@ -88,7 +90,6 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     // binding thread only
     private final Map<String, Long> blockedSince = new HashMap<>();
     private final Set<String> moved = new HashSet<>();
-    private final Set<String> notDriven = new HashSet<>();
     /** Per robot: the model's state when the binding last published for it, and when. */
     private final Map<String, Published> published = new HashMap<>();
     private final long pollNanos;
@@ -173,27 +174,23 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     /** Applies the rules of the table above to one robot. */
     private void evaluate(String robot) {
         int k = RobotNames.number(robot);
-        if (k < 1 || k > RobotNames.PER_GROUP) {
-            if (notDriven.add(robot)) {
-                LOG.log(System.Logger.Level.WARNING, "{0} is not driven: the behaviour hosts Robot1..3 of group g1 "
-                        + "(robot1..3) only", robot);
-            }
-            return;
+        if (k < 1) {
+            return; // not a robot of the fleet's naming (robotK): no component of the model stands for it
         }
         Optional<RobotState> state = fleet.view().robot(robot);
         if (state.isEmpty() || !state.get().reachable()) {
             return;
         }
         RobotState s = state.get();
-        String component = RobotNames.component(k);
-        List<String> places = model.placesOf(component);
-        if (places == null || places.size() != 1) {
+        Instance in = new Instance(RobotNames.group(k), RobotNames.component(k), robot);
+        List<String> places = places(in);
+        if (places.size() != 1) {
             return;
         }
         fleet.errands().seen(robot, s.cell(), s.area() == 1);
         Errands.Errand e = fleet.errands().of(robot);
         long now = System.nanoTime();
-        Map<String, Object> data = model.dataOf(component);
+        Map<String, Object> data = data(in);
         Published last = published.get(robot);
         if (last != null && last.places().equals(places) && last.data().equals(data)
                 && now - last.atNanos() < 4 * pollNanos) {
@@ -209,22 +206,22 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             case "START" -> {
                 boolean waitsAtOpeningDoor = s.detect() == 2 && !doorAheadClosed(s);
                 if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
-                        || fleet.workLeft())) {
-                    unloadLocation(component, area);
+                        || fleet.mayStart())) {
+                    unloadLocation(in, area);
                 }
             }
             case "UNLOAD" -> {
-                if (obstacle(robot, s, component, area, now)) {
+                if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
                 if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle() && !s.carrying()) {
-                    fromUnloadObstacle(component, area, IN_FRONT_OF_CART);
+                    fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
                 } else if (e.leg() == Errands.Leg.TO_STORAGE && s.cell().equals(e.drop()) && s.idle()
                         && s.carrying()) {
-                    unloadToStorage(component);
+                    unloadToStorage(in);
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
-                    storageToDocking(component);
+                    storageToDocking(in);
                 } else if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null && s.idle()) {
                     fleet.resume(robot, "looking for a free storage cell"); // carrying, no storage cell yet
                 } else if (s.idle() && (e.goal() != null ? !s.cell().equals(e.goal()) : fleet.workLeft())) {
@@ -232,16 +229,16 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                     // functions ran while the fleet service was being replaced): it goes on; never sent twice
                     fleet.resume(robot, "idle before its goal");
                 } else if (moved.remove(robot)) {
-                    unloadToUnload(component, area);
+                    unloadToUnload(in, area);
                 }
             }
             case "STORAGE" -> {
-                if (obstacle(robot, s, component, area, now)) {
+                if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
                 if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
-                    storageToDocking(component);
+                    storageToDocking(in);
                 }
             }
             default -> {
@@ -251,9 +248,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     }
 
     /** A stop in front of a closed door, or behind a robot for longer than the patience: reported. */
-    private boolean obstacle(String robot, RobotState s, String component, double area, long now) {
+    private boolean obstacle(String robot, RobotState s, Instance in, double area, long now) {
         if (s.detect() == 2 && doorAheadClosed(s)) {
-            fromUnloadObstacle(component, area, IS_DOOR);
+            fromUnloadObstacle(in, area, IS_DOOR);
             return true;
         }
         Long since = blockedSince.get(robot);
@@ -261,7 +258,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             blockedSince.remove(robot);
             LOG.log(System.Logger.Level.INFO, "{0} has been stopped behind a robot for {1} ms: reported", robot,
                     (now - since) / 1_000_000);
-            fromUnloadObstacle(component, area, IS_OBSTACLE);
+            fromUnloadObstacle(in, area, IS_OBSTACLE);
             return true;
         }
         return false;
@@ -279,45 +276,64 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     // One method per port event: the generated events share no supertype with their data. Each remembers the
     // model's state it was published in (see evaluate).
 
-    private void sent(BrainIoTEvent event, String component) {
-        String robot = "robot" + component.substring("Robot".length());
-        published.put(robot, new Published(model.placesOf(component), model.dataOf(component), System.nanoTime()));
+    private void sent(BrainIoTEvent event, Instance in) {
+        published.put(in.robot(), new Published(places(in), data(in), System.nanoTime()));
         bus.deliver(event);
     }
 
-    private void unloadLocation(String component, double position) {
+    /** A robot's component of the model: its group, its name in Listing 4, the fleet's robot. */
+    private record Instance(String group, String component, String robot) {
+    }
+
+    /** @return the instance's places; [START] while its group is not created yet (its first event creates it) */
+    private List<String> places(Instance in) {
+        List<String> places = model.placesOf(in.group(), in.component());
+        return places == null ? List.of("START") : places;
+    }
+
+    private Map<String, Object> data(Instance in) {
+        Map<String, Object> data = model.dataOf(in.group(), in.component());
+        return data == null ? Map.of() : data;
+    }
+
+    private void unloadLocation(Instance in, double position) {
         RobotBehaviorUnloadLocation e = new RobotBehaviorUnloadLocation();
-        e.component = component;
+        e.group = in.group();
+        e.component = in.component();
         e.position = position;
-        sent(e, component);
+        sent(e, in);
     }
 
-    private void unloadToUnload(String component, double position) {
+    private void unloadToUnload(Instance in, double position) {
         RobotBehaviorUnloadToUnload e = new RobotBehaviorUnloadToUnload();
-        e.component = component;
+        e.group = in.group();
+        e.component = in.component();
         e.position = position;
-        sent(e, component);
+        sent(e, in);
     }
 
-    private void fromUnloadObstacle(String component, double position, int detect) {
+    private void fromUnloadObstacle(Instance in, double position, int detect) {
         RobotBehaviorFromUnloadObstacle e = new RobotBehaviorFromUnloadObstacle();
-        e.component = component;
+        e.group = in.group();
+        e.component = in.component();
         e.position = position;
         e.detect = detect;
-        sent(e, component);
+        sent(e, in);
     }
 
-    private void unloadToStorage(String component) {
+    private void unloadToStorage(Instance in) {
         RobotBehaviorUnloadToStorage e = new RobotBehaviorUnloadToStorage();
-        e.component = component;
+        e.group = in.group();
+        e.component = in.component();
         e.position = 3;
-        sent(e, component);
+        sent(e, in);
     }
 
-    private void storageToDocking(String component) {
+    private void storageToDocking(Instance in) {
         RobotBehaviorStorageToDocking e = new RobotBehaviorStorageToDocking();
-        e.component = component;
+        e.group = in.group();
+        e.component = in.component();
         e.position = 1;
-        sent(e, component);
+        sent(e, in);
     }
 }

@@ -23,6 +23,13 @@ public @interface RobotConfig {
      */
     int patience_polls() default 10;
 
+    /**
+     * Robots that go for carts at once: the door policy fetches carts in waves of at most this many robots, all
+     * crossing the door down, then all crossing it back with their carts ({@code Errands#waveOpen}). A larger wave
+     * uses the door better and crowds the unload area more.
+     */
+    int wave_robots() default 6;
+
     /** How often a refused command is sent again before the errand is planned anew. */
     int command_retries() default 3;
 }

@@ -8,6 +8,7 @@ import org.osgi.service.component.annotations.ReferencePolicyOption;
 
 import eu.brain.iot.behaviours.robot.RobotBehaviorExterns;
 import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.ModelInstance;
 
 /**
  * The robot model's extern functions, acting on the fleet through {@link RobotFleet} (edge commands only).
@@ -18,7 +19,9 @@ import eu.brain.iot.behaviours.warehouse.Cell;
  * <p>
  * Without an edge (the model on a bus alone, as in the model-level tests) there is no {@link RobotFleet}: the
  * functions then only log, and {@code liftCart} counts down as the model expects.
- * Thread-safe: the fleet reference is volatile and the fleet is thread-safe.
+ * The functions act for the robot of the instance named by the last {@link #bipInstance} on the calling thread:
+ * {@code Robot2} of group {@code g4} is robot11 ({@link ModelInstance}).
+ * Thread-safe: the fleet reference is volatile, the fleet is thread-safe, the instance is kept per thread.
  */
 @Component(service = RobotBehaviorExterns.class)
 public class RobotExterns implements RobotBehaviorExterns {
@@ -31,9 +34,16 @@ public class RobotExterns implements RobotBehaviorExterns {
             policyOption = ReferencePolicyOption.GREEDY)
     volatile RobotFleet fleet;
 
-    /** The fleet's id of the model's robot {@code id} (group g1: Robot1..3 are robot1..3). */
-    static String robot(int id) {
-        return "robot" + id;
+    private final ModelInstance instance = new ModelInstance();
+
+    @Override
+    public void bipInstance(String group, String component) {
+        instance.set(group, component);
+    }
+
+    /** The fleet's id of the model's robot {@code id} of the current instance's group. */
+    String robot(int id) {
+        return instance.robotId(id);
     }
 
     /** @return the cell encoded by a negative resolved position, or {@code null} for a position that is not one */
@@ -55,7 +65,7 @@ public class RobotExterns implements RobotBehaviorExterns {
     public int liftCart(int robotId, int remaining) {
         int left = Math.max(0, remaining - 1);
         RobotFleet f = fleet;
-        LOG.log(System.Logger.Level.INFO, "robot {0} lifts a cart (corkscrew); {1} cart(s) left", robotId, left);
+        LOG.log(System.Logger.Level.INFO, "{0} lifts a cart (corkscrew); {1} cart(s) left", robot(robotId), left);
         if (f != null) {
             f.lift(robot(robotId));
         }
@@ -66,14 +76,14 @@ public class RobotExterns implements RobotBehaviorExterns {
     public void moveTo(int robotId, double position) {
         RobotFleet f = fleet;
         Cell aside = sideStep(position);
-        LOG.log(System.Logger.Level.INFO, "robot {0} moves to {1}", robotId,
+        LOG.log(System.Logger.Level.INFO, "{0} moves to {1}", robot(robotId),
                 aside != null ? "the side cell " + aside : position);
         if (position == 0) {
             return;
         }
         if (f == null) {
-            LOG.log(System.Logger.Level.WARNING, "robot {0}: no fleet service (no edge, or being replaced): not "
-                    + "moved; the binding sends it on once it is back", robotId);
+            LOG.log(System.Logger.Level.WARNING, "{0}: no fleet service (no edge, or being replaced): not "
+                    + "moved; the binding sends it on once it is back", robot(robotId));
             return;
         }
         if (aside != null) {
@@ -86,7 +96,7 @@ public class RobotExterns implements RobotBehaviorExterns {
     @Override
     public void placeCart(int robotId) {
         RobotFleet f = fleet;
-        LOG.log(System.Logger.Level.INFO, "robot {0} places its cart in storage", robotId);
+        LOG.log(System.Logger.Level.INFO, "{0} places its cart in storage", robot(robotId));
         if (f != null) {
             f.place(robot(robotId));
         }

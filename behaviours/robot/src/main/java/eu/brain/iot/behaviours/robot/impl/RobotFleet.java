@@ -1,5 +1,6 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
@@ -42,7 +43,7 @@ public final class RobotFleet {
     private final FleetView view;
     private final CommandLedger ledger;
     private final RobotCommands commands;
-    private final Errands errands = new Errands();
+    private final Errands errands;
     private final int retries;
     /**
      * The goal of the last go-to sent to each robot and when, until that mission ends (so it is never sent twice);
@@ -66,6 +67,7 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
+        this.errands = new Errands(config.wave_robots());
         double speed = config.speed() > 0 ? config.speed() : 1;
         this.pendingNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) * 8
                 / speed);
@@ -121,6 +123,9 @@ public final class RobotFleet {
             e = errands.lifted(robot, s.cell(), view.carts(), grid.get()).orElse(e); // a storage cell at last?
         }
         Cell goal = e.goal() != null ? e.goal() : e.leg() == Errands.Leg.TO_STORAGE ? null : e.dock();
+        if (e.leg() == Errands.Leg.TO_STORAGE && !mayCarryBack(robot)) {
+            return; // the wave's last robots still come down through the door: it waits with its cart
+        }
         if (goal != null) {
             goTo(robot, s, goal, why);
         }
@@ -161,6 +166,11 @@ public final class RobotFleet {
             return;
         }
         sentGoal.remove(robot);
+        if (!mayCarryBack(robot)) {
+            LOG.log(System.Logger.Level.INFO, "{0} waits with {1} until the wave''s robots are down", robot,
+                    e.get().cart());
+            return; // the binding sends it on (resume) once they are
+        }
         goTo(robot, s.get(), e.get().drop(), "carrying " + e.get().cart() + " to storage");
     }
 
@@ -181,6 +191,41 @@ public final class RobotFleet {
     boolean workLeft() {
         Optional<Grid> grid = view.grid();
         return grid.isPresent() && errands.workLeft(view.carts(), grid.get());
+    }
+
+    /**
+     * The door policy's second half: a robot carrying a cart back through the door sets off only once every robot
+     * of the wave going for a cart is down (in the unload area, or at its cart), so the door is crossed one way at a
+     * time, when more than three robots (one group's worth) still go for carts: fewer meet at the door as in the
+     * paper's warehouse, and the orchestrator resolves their meetings ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited for.
+     */
+    boolean mayCarryBack(String robot) {
+        List<Errands.Errand> down = errands.goingForCarts();
+        if (down.size() <= eu.brain.iot.behaviours.warehouse.RobotNames.PER_GROUP) {
+            return true; // up to one group's worth of meetings at the door: the orchestrator resolves them (Listing 7)
+        }
+        List<RobotState> robots = view.robots();
+        for (Errands.Errand e : down) {
+            if (e.robot().equals(robot)) {
+                continue;
+            }
+            Optional<RobotState> s = view.robot(e.robot());
+            if (s.isPresent() && s.get().reachable() && s.get().area() != Grid.UNLOAD
+                    && !s.get().cell().equals(e.cartCell()) && !behindACarrier(s.get(), robots)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** A robot stopped behind one carrying a cart does not hold the carriers back: the one in its way must move. */
+    private static boolean behindACarrier(RobotState s, List<RobotState> robots) {
+        return s.detect() == 1 && robots.stream().anyMatch(o -> o.cell().equals(s.ahead()) && o.carrying());
+    }
+
+    /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
+    boolean mayStart() {
+        return errands.waveOpen() && workLeft();
     }
 
     /** The robot is docked: its errand is over. */
