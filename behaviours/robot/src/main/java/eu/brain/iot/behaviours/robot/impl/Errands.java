@@ -10,6 +10,7 @@ import java.util.Set;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.CartState;
 import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotState;
 
 /**
  * The errands of every robot and the claim table that keeps two robots from going for the same cart. One table is
@@ -47,6 +48,8 @@ final class Errands {
     /** Robots that may go for carts at once (the wave's size). */
     private final int wave;
     private final Map<String, Cell> docks = new HashMap<>();
+    /** The robots this table has taken over ({@link #adopt}): each once. */
+    private final Set<String> adopted = new HashSet<>();
     /** Storage cells given to a cart being carried there. */
     private final Set<Cell> drops = new HashSet<>();
     private int delivered;
@@ -61,6 +64,67 @@ final class Errands {
         if (docking) {
             docks.putIfAbsent(robot, cell);
         }
+    }
+
+    /**
+     * Takes over a robot the first time this table sees it, from what the robot does now (the device model): on a
+     * fresh start every robot is docked and idle, and only its dock is learnt; when the behaviour starts again while
+     * the fleet works (stopped, then brought back by the BMS), the errands are rebuilt so that no robot is left
+     * without one:
+     * <ul>
+     * <li>carrying a cart: it carries it to storage (to the storage cell it is heading for when that is still free,
+     * else one is given as it goes);</li>
+     * <li>heading for, or standing on, a cart on the floor that no robot claimed: it goes for that cart;</li>
+     * <li>anywhere else outside the docking area: it goes home.</li>
+     * </ul>
+     * A robot first seen outside the docking area gets the nearest docking cell that is no other robot's dock and
+     * where no other robot stands.
+     *
+     * @param s      the robot now
+     * @param carts  the carts now
+     * @param grid   the map
+     * @param robots every robot now (their cells are not free docks)
+     * @return whether it was taken over now (its first sight)
+     */
+    synchronized boolean adopt(RobotState s, List<CartState> carts, Grid grid, List<RobotState> robots) {
+        String robot = s.id();
+        if (!adopted.add(robot)) {
+            seen(robot, s.cell(), grid.area(s.cell()) == Grid.DOCKING);
+            return false;
+        }
+        if (grid.area(s.cell()) == Grid.DOCKING) {
+            docks.putIfAbsent(robot, s.cell());
+        } else if (!docks.containsKey(robot)) {
+            Set<Cell> taken = new HashSet<>(docks.values());
+            robots.stream().filter(o -> !o.id().equals(robot)).forEach(o -> taken.add(o.cell()));
+            Cell dock = grid.nearest(s.cell(), c -> grid.area(c) == Grid.DOCKING && !taken.contains(c), Set.of());
+            if (dock != null) {
+                docks.put(robot, dock);
+            }
+        }
+        if (errands.containsKey(robot)) {
+            return true;
+        }
+        Cell dock = docks.get(robot);
+        if (s.carrying()) {
+            Cell drop = !s.idle() && s.goal() != null && grid.area(s.goal()) == Grid.STORAGE && !drops.contains(s.goal())
+                    && carts.stream().noneMatch(c -> c.carriedBy() == null && c.cell().equals(s.goal()))
+                    ? s.goal() : null;
+            if (drop != null) {
+                drops.add(drop);
+            }
+            errands.put(robot, new Errand(robot, Leg.TO_STORAGE, s.cart(), null, drop, dock));
+            return true;
+        }
+        Cell target = !s.idle() && s.goal() != null ? s.goal() : s.cell();
+        Optional<CartState> cart = carts.stream()
+                .filter(c -> c.cell().equals(target) && waiting(c, grid) && !claimed(c.id())).findFirst();
+        if (cart.isPresent()) {
+            errands.put(robot, new Errand(robot, Leg.TO_CART, cart.get().id(), target, null, dock));
+        } else if (grid.area(s.cell()) != Grid.DOCKING && dock != null) {
+            errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, dock));
+        }
+        return true;
     }
 
     synchronized Errand of(String robot) {
@@ -119,6 +183,9 @@ final class Errands {
     /** The robot lifted its cart: it is given a storage cell, or none when no free one can be reached. */
     synchronized Optional<Errand> lifted(String robot, Cell at, List<CartState> carts, Grid grid) {
         Errand e = of(robot);
+        if (e.drop() != null) {
+            drops.remove(e.drop()); // chosen again, with what the warehouse looks like now
+        }
         Set<Cell> floor = new HashSet<>();
         carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> floor.add(c.cell()));
         floor.remove(at); // the cart it lifts
@@ -148,6 +215,38 @@ final class Errands {
         Errand next = new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), best, e.dock());
         errands.put(robot, next);
         return Optional.of(next);
+    }
+
+    /**
+     * A go-to of the robot's errand failed when it started (robot-sim: no path, e.g. a cart put down since on the
+     * storage cell it was given, which the device model did not show yet): the errand's goal is chosen again, so
+     * the robot is never sent to the same unreachable cell over and over. A storage cell is given anew, avoiding
+     * that cell; a cart that cannot be reached goes back to the table.
+     *
+     * @return whether the errand changed
+     */
+    synchronized boolean goalFailed(String robot, Cell at, Cell goal, List<CartState> carts, Grid grid) {
+        Errand e = errands.get(robot);
+        if (e == null || goal == null || !goal.equals(e.goal())) {
+            return false;
+        }
+        switch (e.leg()) {
+            case TO_STORAGE -> {
+                drops.remove(e.drop());
+                drops.add(goal); // kept out of the choice below, then given back
+                errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), null, e.dock()));
+                lifted(robot, at, carts, grid); // none found: asked again as the robot goes on
+                drops.remove(goal);
+                return true;
+            }
+            case TO_CART -> {
+                errands.remove(robot);
+                return true;
+            }
+            default -> {
+                return false;
+            }
+        }
     }
 
     /** The robot put its cart down in storage: it heads home. */

@@ -137,11 +137,10 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
             evaluate(m.robotId);
         } else if (event instanceof MissionFailed m) {
-            fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
-            if (!"cancelled".equals(m.reason)) {
-                LOG.log(System.Logger.Level.WARNING, "{0}: {1} mission failed ({2}); it goes on with its errand",
-                        m.robotId, m.missionType, m.reason);
-                fleet.resume(m.robotId, "after a failed " + m.missionType);
+            if ("cancelled".equals(m.reason)) {
+                fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
+            } else {
+                fleet.missionFailed(m.robotId, m.missionType, m.goalX, m.goalY, m.reason);
             }
             evaluate(m.robotId);
         } else if (event instanceof RobotPositionChanged p) {
@@ -183,14 +182,21 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         }
         RobotState s = state.get();
         Instance in = new Instance(RobotNames.group(k), RobotNames.component(k), robot);
-        List<String> places = places(in);
+        fleet.adopt(s);
+        List<String> places;
+        Map<String, Object> data;
+        Errands.Errand e;
+        synchronized (model) {
+            // one consistent look: the model's transitions (and the errand changes their extern functions make) run
+            // under the model's lock, so places, data and errand are read between two transitions, never across one
+            places = places(in);
+            data = data(in);
+            e = fleet.errands().of(robot);
+        }
         if (places.size() != 1) {
             return;
         }
-        fleet.errands().seen(robot, s.cell(), s.area() == 1);
-        Errands.Errand e = fleet.errands().of(robot);
         long now = System.nanoTime();
-        Map<String, Object> data = data(in);
         Published last = published.get(robot);
         if (last != null && last.places().equals(places) && last.data().equals(data)
                 && now - last.atNanos() < 4 * pollNanos) {
@@ -214,7 +220,12 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
-                if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle() && !s.carrying()) {
+                if (e.leg() == Errands.Leg.TO_STORAGE && s.carrying() && !Boolean.TRUE.equals(data.get("carrying"))) {
+                    // taken over carrying a cart (the behaviour started again): the model goes through CART,
+                    // where liftCart finds the cart lifted already, to carry it on (Errands#adopt)
+                    fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
+                } else if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle()
+                        && !s.carrying()) {
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
                 } else if (e.leg() == Errands.Leg.TO_STORAGE && s.cell().equals(e.drop()) && s.idle()
                         && s.carrying()) {

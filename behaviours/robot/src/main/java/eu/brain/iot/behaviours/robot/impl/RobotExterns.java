@@ -58,7 +58,7 @@ public class RobotExterns implements RobotBehaviorExterns {
     @Override
     public double getPosition(int robotId) {
         RobotFleet f = fleet;
-        return f == null ? IN_DOCKING : f.area(robot(robotId));
+        return f == null ? IN_DOCKING : f.position(robot(robotId));
     }
 
     @Override

@@ -55,8 +55,19 @@ public final class RobotFleet {
     private record SentGoal(Cell goal, long atNanos) {
     }
 
-    /** The cell each robot was told to step aside to, until it leaves it. */
-    private final Map<String, Cell> aside = new ConcurrentHashMap<>();
+    /**
+     * Each robot told to step aside: the cell, the robot it lets pass, and when, until it leaves that cell.
+     */
+    private final Map<String, Aside> aside = new ConcurrentHashMap<>();
+    /** How long a robot waits aside at most (warehouse time: 20 polls), should the robot it let pass stop near it. */
+    private final long asideNanos;
+
+    /**
+     * A robot stepping aside: to {@code cell}, for {@code passer} (the robot it met; {@code null} when none was seen
+     * in front of it), since {@code atNanos}.
+     */
+    private record Aside(Cell cell, String passer, long atNanos) {
+    }
     /** Refusals in a row per robot. */
     private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
     private final AtomicLong replans = new AtomicLong();
@@ -69,8 +80,9 @@ public final class RobotFleet {
         this.retries = Math.max(0, config.command_retries());
         this.errands = new Errands(config.wave_robots());
         double speed = config.speed() > 0 ? config.speed() : 1;
-        this.pendingNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) * 8
-                / speed);
+        long pollNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
+        this.pendingNanos = pollNanos * 8;
+        this.asideNanos = pollNanos * 20;
     }
 
     FleetView view() {
@@ -79,6 +91,34 @@ public final class RobotFleet {
 
     Errands errands() {
         return errands;
+    }
+
+    /**
+     * The robot as the errand table first sees it (its dock, or the errand it is on when this behaviour started
+     * while the fleet worked: {@link Errands#adopt}); later, where it is.
+     */
+    void adopt(RobotState s) {
+        Optional<Grid> grid = view.grid();
+        if (grid.isEmpty()) {
+            errands.seen(s.id(), s.cell(), s.area() == Grid.DOCKING);
+            return;
+        }
+        if (errands.adopt(s, view.carts(), grid.get(), view.robots())) {
+            Errands.Errand e = errands.of(s.id());
+            if (e.leg() != Errands.Leg.NONE) {
+                LOG.log(System.Logger.Level.INFO, "{0} taken over at {1}: {2}{3}, dock {4}", s.id(), s.cell(),
+                        e.leg(), e.cart() == null ? "" : " with " + e.cart(), e.dock());
+            }
+        }
+    }
+
+    /**
+     * The robot model's {@code getPosition}: its area code when it stands in docking, unload or storage; out on
+     * the floor elsewhere (the corridor, a doorway) it counts as unload, so a robot the model first meets away
+     * from its dock starts {@code returning} (Robot.bip's initial transition).
+     */
+    double position(String robot) {
+        return view.robot(robot).map(s -> s.area() >= 1 && s.area() <= 3 ? s.area() : Grid.UNLOAD).orElse(1);
     }
 
     /** @return the area code of the robot's cell (docking 1, unload 2, storage 3), docking when unknown */
@@ -99,19 +139,17 @@ public final class RobotFleet {
             return;
         }
         RobotState s = state.get();
-        Cell side = aside.get(robot);
+        Aside side = aside.get(robot);
         if (side != null) {
-            if (!s.cell().equals(side) && !s.idle()) {
+            if (!s.cell().equals(side.cell()) && !s.idle()) {
                 return; // still on its way aside
             }
-            boolean near = view.robots().stream().anyMatch(o -> !o.id().equals(robot)
-                    && o.cell().distance(s.cell()) <= 2);
-            if (s.cell().equals(side) && near) {
+            if (s.cell().equals(side.cell()) && stillPassing(s, side)) {
                 return; // it waits aside until the robot it let pass is gone
             }
             aside.remove(robot);
         }
-        errands.seen(robot, s.cell(), s.area() == Grid.DOCKING);
+        adopt(s);
         Errands.Errand e = errands.of(robot);
         if (e.leg() == Errands.Leg.NONE) {
             e = errands.claim(robot, s.cell(), view.carts(), grid.get()).orElse(e);
@@ -132,11 +170,25 @@ public final class RobotFleet {
     }
 
     /**
+     * Whether the robot that {@code s} stepped aside for still comes by: it is within two cells and still on a
+     * mission. Only that robot is waited for (two robots sent aside near each other used to wait for each other for
+     * ever), and for {@link #asideNanos} at most.
+     */
+    private boolean stillPassing(RobotState s, Aside side) {
+        if (System.nanoTime() - side.atNanos() > asideNanos || side.passer() == null) {
+            return false;
+        }
+        return view.robot(side.passer()).filter(p -> p.cell().distance(s.cell()) <= 2 && !p.idle()).isPresent();
+    }
+
+    /**
      * The orchestrator told the robot to step aside to a cell: its go-to is cancelled, then it goes there, and it
-     * waits there until no other robot is within two cells of it (the one it let pass is gone).
+     * waits there while the robot it let pass (the one in front of it now) is within two cells and still moving.
      */
     void sideStep(String robot, Cell cell) {
-        aside.put(robot, cell);
+        String passer = view.robot(robot).flatMap(me -> view.robots().stream()
+                .filter(o -> o.cell().equals(me.ahead())).map(RobotState::id).findFirst()).orElse(null);
+        aside.put(robot, new Aside(cell, passer, System.nanoTime()));
         CancelMissionCommand cancel = new CancelMissionCommand();
         cancel.deviceId = robot;
         cancel.missionType = "goto";
@@ -151,10 +203,15 @@ public final class RobotFleet {
 
     /** The robot stands under its cart: lift it, then head for the storage cell it is given. */
     void lift(String robot) {
-        PickCartCommand pick = new PickCartCommand();
-        pick.deviceId = robot;
-        send(pick, "lifting " + errands.of(robot).cart());
         Optional<RobotState> s = view.robot(robot);
+        if (s.isPresent() && s.get().carrying()) {
+            // taken over carrying its cart (Errands#adopt): the model goes through CART, the robot has it already
+            LOG.log(System.Logger.Level.INFO, "{0} already carries {1}", robot, s.get().cart());
+        } else {
+            PickCartCommand pick = new PickCartCommand();
+            pick.deviceId = robot;
+            send(pick, "lifting " + errands.of(robot).cart());
+        }
         Optional<Grid> grid = view.grid();
         if (s.isEmpty() || grid.isEmpty()) {
             return;
@@ -240,6 +297,27 @@ public final class RobotFleet {
                 ? -1 : goalY))) {
             sentGoal.remove(robot);
         }
+    }
+
+    /**
+     * A mission of the robot failed (not cancelled): a go-to to its errand's goal that failed has that goal chosen
+     * again ({@link Errands#goalFailed}); then the robot goes on with its errand.
+     */
+    void missionFailed(String robot, String type, Integer goalX, Integer goalY, String reason) {
+        missionEnded(robot, type, goalX, goalY);
+        Optional<RobotState> s = view.robot(robot);
+        Optional<Grid> grid = view.grid();
+        if ("goto".equals(type) && goalX != null && goalY != null && s.isPresent() && grid.isPresent()
+                && errands.goalFailed(robot, s.get().cell(), new Cell(goalX, goalY), view.carts(), grid.get())) {
+            Errands.Errand e = errands.of(robot);
+            LOG.log(System.Logger.Level.WARNING, "{0}: its go-to to ({1},{2}) failed ({3}); {4}", robot, goalX, goalY,
+                    reason, e.leg() == Errands.Leg.NONE ? "its cart goes back to the table"
+                            : "now " + e.leg() + " " + (e.goal() == null ? "(a cell chosen as it goes)" : e.goal()));
+        } else {
+            LOG.log(System.Logger.Level.WARNING, "{0}: {1} mission failed ({2}); it goes on with its errand", robot,
+                    type, reason);
+        }
+        resume(robot, "after a failed " + type);
     }
 
     /**
