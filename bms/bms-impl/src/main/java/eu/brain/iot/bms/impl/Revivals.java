@@ -140,9 +140,9 @@ final class Revivals {
             noticed = new Noticed(back.since(), back.attempt() + 1);
             if (now + delay >= back.since() + s.installDeadlineMs()) {
                 giveUp(symbolicName, listed.symbolicName + " " + listed.version, back.since(), back.attempt(),
-                        "TIMEOUT", "its bundle kept going away after it was brought back (" + back.attempt()
-                                + " times since " + (now - back.since()) + " ms ago, install.deadline.ms "
-                                + s.installDeadlineMs() + ")");
+                        "TIMEOUT", "its bundle kept going away after it was brought back (brought back "
+                                + back.attempt() + " times in the " + (now - back.since()) + " ms since it first went"
+                                + " away; install.deadline.ms " + s.installDeadlineMs() + ")");
                 return;
             }
         }
