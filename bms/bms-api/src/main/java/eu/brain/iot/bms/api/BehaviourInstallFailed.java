@@ -7,7 +7,10 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  * tries again at {@link #nextRetry}.
  */
 public class BehaviourInstallFailed extends BrainIoTEvent {
-    /** The event type whose first event asked for the install. */
+    /**
+     * The event type whose first event asked for the install; {@code null} when no event did: the BMS was bringing
+     * back a behaviour whose bundle stopped or was uninstalled outside the installer.
+     */
     public String eventType;
     /** The behaviour bundle's symbolic name and version, e.g. {@code eu.brain.iot.behaviours.door 0.1.0}. */
     public String behaviour;

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.LongAdder;
+import java.util.function.BooleanSupplier;
 
 import org.osgi.service.log.Logger;
 import org.osgi.util.promise.Promise;
@@ -17,7 +18,6 @@ import eu.brain.iot.bis.api.BehaviourCandidate;
 import eu.brain.iot.bis.api.BundleInstaller;
 import eu.brain.iot.bis.api.InstallException;
 import eu.brain.iot.bis.api.InstallException.Problem;
-import eu.brain.iot.bis.api.InstallRequest;
 import eu.brain.iot.bis.api.InstalledBehaviour;
 import eu.brain.iot.bms.impl.TypeState.Installed;
 import eu.brain.iot.bms.impl.TypeState.Installing;
@@ -39,10 +39,13 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  * requests, their answers, retries, deadlines, giving up on held events, alerts) runs on the BMS's own thread
  * ({@link Scheduler}).
  * <p>
+ * A behaviour whose bundle stops or is uninstalled outside the installer is brought back without waiting for an
+ * event by {@link Revivals}, which shares the install requests in flight ({@link InstallJobs}) with the event types.
+ * <p>
  * Ownership: {@link #states} is shared; each entry is replaced as a whole with {@code replace(type, old, new)}
- * (see {@link TypeState}). {@link #jobs} and {@link #loggedNotFound} belong to the BMS's thread. {@link #settings}
- * is volatile, replaced by {@link #reconfigure}. {@link #hierarchies} holds the searched types of each type with a
- * state (added by publishers, dropped by the sweep with the state).
+ * (see {@link TypeState}). {@link #jobs}, {@link #revivals} and {@link #loggedNotFound} belong to the BMS's thread.
+ * {@link #settings} is volatile, replaced by {@link #reconfigure}. {@link #hierarchies} holds the searched types of
+ * each type with a state (added by publishers, dropped by the sweep with the state).
  */
 final class BehaviourManager {
 
@@ -57,13 +60,14 @@ final class BehaviourManager {
 
     private final ConcurrentHashMap<String, TypeState> states = new ConcurrentHashMap<>();
     private final ConcurrentHashMap<String, List<String>> hierarchies = new ConcurrentHashMap<>();
-    /** In-flight install requests by behaviour ("symbolicName version"): types needing the same one share it. */
-    private final Map<String, InstallJob> jobs = new HashMap<>();
+    /** In-flight install requests by behaviour: types needing the same one, and its revival, share it. */
+    private final InstallJobs jobs;
+    private final Revivals revivals;
     private final Set<String> loggedNotFound = new HashSet<>();
-    private long nextJob = 1;
 
+    /** @param frameworkStopping whether the framework is shutting down: then no behaviour is brought back */
     BehaviourManager(BundleInstaller installer, HeldEvents held, Scheduler scheduler, Alerts alerts, Logger log,
-            ManagerCountersImpl counters, Settings settings) {
+            ManagerCountersImpl counters, Settings settings, BooleanSupplier frameworkStopping) {
         this.installer = installer;
         this.held = held;
         this.scheduler = scheduler;
@@ -72,6 +76,9 @@ final class BehaviourManager {
         this.counters = counters;
         this.settings = settings;
         this.history = new History(settings.historySize());
+        this.jobs = new InstallJobs(installer, scheduler);
+        this.revivals = new Revivals(installer, jobs, scheduler, alerts, log, counters, history, () -> this.settings,
+                frameworkStopping, this::answered);
     }
 
     /** Start the periodic sweep (deadlines, held events nothing waits for). */
@@ -159,6 +166,14 @@ final class BehaviourManager {
 
     // ---------------------------------------------------------------- the BMS's thread
 
+    /**
+     * A bundle stopped or was uninstalled (the framework's bundle event, queued here): if it is a behaviour the
+     * installer installed, {@link Revivals} brings it back after {@code restart.grace.ms}.
+     */
+    void wentAway(String symbolicName, long bundleId) {
+        revivals.wentAway(symbolicName, bundleId);
+    }
+
     private void searched(String eventType, Searching searching, Promise<List<BehaviourCandidate>> answer) {
         if (states.get(eventType) != searching) {
             return;
@@ -201,47 +216,32 @@ final class BehaviourManager {
         if (states.get(eventType) != expected) {
             return;
         }
-        String behaviour = best.symbolicName + " " + best.version;
         int attempt = expected instanceof Searching s ? s.attempt() : 1;
-        InstallJob job = jobs.get(behaviour);
+        InstallJob job = jobs.inFlight(best.symbolicName);
         if (job == null) {
             // installed already but not taking events: stopped (a failure, Gogo's stop), a component not satisfied,
             // or its bundle uninstalled behind the installer's back. The same request starts or installs it again.
             String state = installer.installed().stream().filter(b -> best.symbolicName.equals(b.symbolicName))
                     .map(b -> b.state).findFirst().orElse(null);
             String kind = state == null ? "INSTALLED" : "UNINSTALLED".equals(state) ? "REINSTALLED" : "RESTARTED";
-            job = new InstallJob(nextJob++, behaviour, kind, new ArrayList<>());
-            jobs.put(behaviour, job);
-            InstallRequest request = new InstallRequest();
-            request.symbolicName = best.symbolicName;
-            request.versionRange = best.version == null ? null : "[" + best.version + "," + best.version + "]";
-            request.consumedTypes = expected.searched();
-            request.reason = "an event of type " + eventType + " had no consumer" + switch (kind) {
+            String reason = "an event of type " + eventType + " had no consumer" + switch (kind) {
             case "RESTARTED" -> " and " + best.symbolicName + " is installed but not taking events (" + state
                     + "): started again";
             case "REINSTALLED" -> " and the bundle of " + best.symbolicName + " had been uninstalled (not with"
                     + " bis:uninstall): installed again";
             default -> "";
             } + " (Behaviour Management Service)";
-            request.operator = false;
-            Promise<InstalledBehaviour> result;
-            try {
-                result = installer.install(request);
-            } catch (RuntimeException e) {
-                result = Promises.failed(e);
-            }
-            InstallJob started = job;
-            Promise<InstalledBehaviour> answer = result;
-            answer.onResolve(() -> scheduler.execute(() -> answered(started, answer)));
+            job = jobs.start(best.symbolicName, best.version, expected.searched(), kind, reason, false,
+                    this::answered);
         }
-        Installing installing = new Installing(expected.searched(), expected.since(), behaviour, attempt, job.id());
+        Installing installing = new Installing(expected.searched(), expected.since(), job.behaviour(), attempt,
+                job.id());
         if (states.replace(eventType, expected, installing)) {
             job.types().add(eventType);
         }
     }
 
     private void answered(InstallJob job, Promise<InstalledBehaviour> answer) {
-        jobs.remove(job.behaviour(), job);
         long now = scheduler.now();
         List<String> types = new ArrayList<>();
         List<Installing> waiting = new ArrayList<>();
@@ -249,6 +249,12 @@ final class BehaviourManager {
             if (states.get(type) instanceof Installing i && i.job() == job.id()) {
                 types.add(type);
                 waiting.add(i);
+            }
+        }
+        if (job.revival()) {
+            revivals.answered(job, answer, !types.isEmpty()); // events waited for it too: their outcome is recorded
+            if (types.isEmpty()) {
+                return;
             }
         }
         Throwable failure = Answers.failure(answer);
@@ -269,7 +275,7 @@ final class BehaviourManager {
                 duration = Math.max(duration, now - i.since());
                 attempt = Math.max(attempt, i.attempt());
                 history.add(History.entry(now, job.kind(), List.of(types.get(k)), job.behaviour(), now - i.since(),
-                        i.attempt(), 0, null));
+                        i.attempt(), 0, job.kind().equals("INSTALLED") ? null : job.reason()));
             }
             if (!types.isEmpty()) {
                 alerts.installed(types, done.symbolicName, done.version, done.repository, duration, attempt);
@@ -477,13 +483,5 @@ final class BehaviourManager {
 
     List<HeldType> heldNow() {
         return held.held();
-    }
-
-    /**
-     * An install request in flight and the types waiting for it; owned by the BMS's thread. {@code kind}: the history's
-     * word for its success: {@code INSTALLED}, {@code RESTARTED} (it was installed but not active) or
-     * {@code REINSTALLED} (its bundle had been uninstalled by someone else).
-     */
-    private record InstallJob(long id, String behaviour, String kind, List<String> types) {
     }
 }

@@ -7,7 +7,9 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
+import java.util.function.BooleanSupplier;
 
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
@@ -37,8 +39,10 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
  * The Behaviour Management Service as a Declarative Services component: the bus's {@link UnhandledEventPolicy}
  * and the BMS's statistics. It needs a {@link BundleInstaller} (local, or one day remote), the bus and the bus's
  * {@link HeldEvents}. A new configuration applies in place ({@code @Modified}): the types being installed and the
- * held events are kept. Threads: {@code brain-iot-bms} (the BMS's decisions after an episode's first event) and
- * {@code brain-iot-bms-alerts} (publishing alerts); see {@link BehaviourManager}.
+ * held events are kept. It listens to the framework's bundle events ({@link BundleWatch}) to bring back a behaviour
+ * whose bundle stopped or was uninstalled outside the installer. Threads: {@code brain-iot-bms} (the BMS's decisions
+ * after an episode's first event, and after a behaviour's bundle went away), {@code brain-iot-bms-alerts} (publishing
+ * alerts) and the framework's event thread (which only queues bundle events); see {@link BehaviourManager}.
  */
 @Component(service = { UnhandledEventPolicy.class, BehaviourManagerStatistics.class },
         configurationPid = BehaviourManagerComponent.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
@@ -49,12 +53,13 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
 
     private final BehaviourManager manager;
     private final ThreadScheduler scheduler;
+    private final BundleWatch watch;
     private final ExecutorService alertThread;
     private final ManagerCountersImpl counters = new ManagerCountersImpl();
     private final Logger log;
 
     @Activate
-    public BehaviourManagerComponent(BmsConfig config, @Reference BundleInstaller installer,
+    public BehaviourManagerComponent(BundleContext context, BmsConfig config, @Reference BundleInstaller installer,
             @Reference EventBus bus, @Reference HeldEvents held,
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
@@ -65,9 +70,12 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
             t.setDaemon(true);
             return t;
         });
+        BooleanSupplier frameworkStopping = BundleWatch.frameworkStopping(context);
         this.manager = new BehaviourManager(installer, held, scheduler,
-                new Alerts(bus, alertThread, log, counters.alerts), log, counters, settings);
+                new Alerts(bus, alertThread, log, counters.alerts), log, counters, settings, frameworkStopping);
+        this.watch = new BundleWatch(context, scheduler, frameworkStopping, manager::wentAway);
         manager.start();
+        watch.open();
     }
 
     @Modified
@@ -82,6 +90,7 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
 
     @Deactivate
     void deactivate() {
+        watch.close();
         scheduler.close();
         alertThread.shutdownNow();
     }

@@ -44,4 +44,11 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     @AttributeDefinition(description = "How many entries bms:history keeps")
     int history_size() default 256;
+
+    @AttributeDefinition(description = "How long after a behaviour's bundle stopped or was uninstalled outside "
+            + "the installer (a failure, Gogo's stop or uninstall; not bis:stop, bis:uninstall nor the installer's "
+            + "own work) the BMS waits before it has the installer start it again, or install it again, without "
+            + "waiting for an event (ms). A bundle active again by then (a refresh, an update) is left alone. Nothing "
+            + "is brought back while the framework shuts down.")
+    long restart_grace_ms() default 1_000;
 }

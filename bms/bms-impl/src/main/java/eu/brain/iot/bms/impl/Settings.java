@@ -8,10 +8,10 @@ import java.util.List;
  */
 record Settings(int maxHeldEvents, long negativeCacheMs, long retryInitialMs, long retryMaxMs,
         long installDeadlineMs, long handoverGraceMs, long sweepIntervalMs, List<String> ignoredTypes,
-        int historySize) {
+        int historySize, long restartGraceMs) {
 
     static final Settings DEFAULTS = new Settings(65_536, 60_000, 500, 30_000, 120_000, 0, 1_000, List.of(),
-            256);
+            256, 1_000);
 
     Settings {
         atLeast("max.held.events", maxHeldEvents, 1);
@@ -22,6 +22,7 @@ record Settings(int maxHeldEvents, long negativeCacheMs, long retryInitialMs, lo
         atLeast("handover.grace.ms", handoverGraceMs, 0);
         atLeast("sweep.interval.ms", sweepIntervalMs, 1);
         atLeast("history.size", historySize, 1);
+        atLeast("restart.grace.ms", restartGraceMs, 0);
         if (retryMaxMs < retryInitialMs) {
             throw new IllegalArgumentException("retry.max.ms (" + retryMaxMs + ") is below retry.initial.ms ("
                     + retryInitialMs + ") in configuration PID " + BehaviourManagerComponent.PID
@@ -34,7 +35,7 @@ record Settings(int maxHeldEvents, long negativeCacheMs, long retryInitialMs, lo
         return new Settings(config.max_held_events(), config.negative_cache_ms(), config.retry_initial_ms(),
                 config.retry_max_ms(), config.install_deadline_ms(), config.handover_grace_ms(),
                 config.sweep_interval_ms(), config.ignored_types() == null ? List.of()
-                        : List.of(config.ignored_types()), config.history_size());
+                        : List.of(config.ignored_types()), config.history_size(), config.restart_grace_ms());
     }
 
     /** The delay before attempt {@code attempt + 1}, after {@code attempt} failures: doubling, capped. */

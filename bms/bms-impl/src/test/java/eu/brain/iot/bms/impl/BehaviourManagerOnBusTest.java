@@ -82,7 +82,7 @@ class BehaviourManagerOnBusTest {
         bus = new BusCore(65_536, 5_000, log.logger);
         scheduler = new ThreadScheduler("brain-iot-bms", log.logger);
         bms = new BehaviourManager(installer, bus, scheduler, new Alerts(bus, Runnable::run, log.logger,
-                new LongAdder()), log.logger, counters, settings);
+                new LongAdder()), log.logger, counters, settings, () -> false);
         bms.start();
         bus.policy(new eu.brain.iot.eventing.spi.UnhandledEventPolicy() {
             @Override
@@ -182,7 +182,7 @@ class BehaviourManagerOnBusTest {
 
     @Test
     void heldEventsAreKeptWhileInstallsFailThenDiscardedAndCountedAtTheDeadline() {
-        startBms(new Settings(1_000, 60_000, 20, 40, 400, 1_000, 50, List.of(), 16));
+        startBms(new Settings(1_000, 60_000, 20, 40, 400, 1_000, 50, List.of(), 16, 1_000));
         AlertReceiver<BehaviourInstallFailed> alerts = new AlertReceiver<>();
         bus.addBehaviour(alerts, BehaviourInstallFailed.class.getName());
         // every attempt fails, as with a repository that cannot be reached

@@ -40,13 +40,13 @@ class BehaviourManagerTest {
     private BehaviourManager bms;
 
     private static final Settings SETTINGS = new Settings(1_000, 60_000, 500, 4_000, 10_000, 1_000, 1_000,
-            List.of("eu.brain.iot.ignored.*"), 16);
+            List.of("eu.brain.iot.ignored.*"), 16, 1_000);
 
     @BeforeEach
     void start() {
         installer.offer(DOOR_EVENT, DOOR, "0.1.0");
         bms = new BehaviourManager(installer, bus, clock, new Alerts(alerts, Runnable::run, log.logger,
-                new LongAdder()), log.logger, counters, SETTINGS);
+                new LongAdder()), log.logger, counters, SETTINGS, () -> false);
         bms.start();
     }
 
@@ -284,8 +284,8 @@ class BehaviourManagerTest {
     void eventsStillHeldWhenTheGracePeriodEndsAreDecidedAtOnceNotAtTheNextSweep() {
         ManualScheduler time = new ManualScheduler();
         BehaviourManager manager = new BehaviourManager(installer, bus, time, new Alerts(alerts, Runnable::run,
-                log.logger, new LongAdder()), log.logger, counters,
-                new Settings(1_000, 60_000, 500, 4_000, 10_000, 1_000, 60_000, List.of(), 16)); // sweep: 1 min
+                log.logger, new LongAdder()), log.logger, counters, // sweep: 1 min
+                new Settings(1_000, 60_000, 500, 4_000, 10_000, 1_000, 60_000, List.of(), 16, 1_000), () -> false);
         manager.start();
         bus.publish(manager, DOOR_EVENT);
         time.runDue();
@@ -342,10 +342,12 @@ class BehaviourManagerTest {
         // as after a restart of the BMS: the bus holds events of a type the new BMS has no state for
         FakeHold orphaned = new FakeHold();
         BehaviourManager before = new BehaviourManager(installer, orphaned, new ManualScheduler(),
-                new Alerts(alerts, Runnable::run, log.logger, new LongAdder()), log.logger, counters, SETTINGS);
+                new Alerts(alerts, Runnable::run, log.logger, new LongAdder()), log.logger, counters, SETTINGS,
+                () -> false);
         orphaned.publish(before, DOOR_EVENT);
         BehaviourManager after = new BehaviourManager(installer, orphaned, clock,
-                new Alerts(alerts, Runnable::run, log.logger, new LongAdder()), log.logger, counters, SETTINGS);
+                new Alerts(alerts, Runnable::run, log.logger, new LongAdder()), log.logger, counters, SETTINGS,
+                () -> false);
         after.start();
         int requests = installer.requests.size();
         clock.advance(SETTINGS.sweepIntervalMs());
@@ -385,10 +387,10 @@ class BehaviourManagerTest {
 
     @Test
     void badSettingsAreRefusedNamingTheProperty() {
-        assertThatThrownBy(() -> new Settings(0, 1, 1, 1, 1, 1, 1, List.of(), 1))
+        assertThatThrownBy(() -> new Settings(0, 1, 1, 1, 1, 1, 1, List.of(), 1, 0))
                 .hasMessageContaining("max.held.events must be at least 1, was 0")
                 .hasMessageContaining("eu.brain.iot.bms");
-        assertThatThrownBy(() -> new Settings(1, 1, 1_000, 10, 1, 1, 1, List.of(), 1))
+        assertThatThrownBy(() -> new Settings(1, 1, 1_000, 10, 1, 1, 1, List.of(), 1, 0))
                 .hasMessageContaining("retry.max.ms (10) is below retry.initial.ms (1000)");
         assertThat(SETTINGS.backoff(1)).isEqualTo(500);
         assertThat(SETTINGS.backoff(3)).isEqualTo(2_000);

@@ -19,9 +19,14 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 public class OrderBehaviourActivator implements BundleActivator {
 
     public static final String ACK = "eu.brain.iot.bms.integration.tb.Ack";
+    /** While this system property is {@code true}, the bundle fails to start, as a broken behaviour would. */
+    public static final String FAIL_START = "tb.bms.orders.failStart";
 
     @Override
     public void start(BundleContext context) {
+        if (Boolean.getBoolean(FAIL_START)) {
+            throw new IllegalStateException("the test asks tb.bms.orders to fail to start (" + FAIL_START + ")");
+        }
         EventBus bus = context.getService(context.getServiceReference(EventBus.class));
         Hashtable<String, Object> props = new Hashtable<>();
         props.put("eu.brain.iot.behaviour.consumed", new String[] { Order.class.getName(), Refill.class.getName() });

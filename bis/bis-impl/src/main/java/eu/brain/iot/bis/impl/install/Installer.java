@@ -156,13 +156,14 @@ public final class Installer implements BundleInstaller {
      * An operator's stop ({@code bis:stop}): the behaviour's bundle is stopped, and it is not started or installed
      * again by an automatic request until an operator allows it ({@link #allow}) or installs it ({@code bis:install},
      * which starts it at once). A bundle stopped by anything else (a failure, Gogo's {@code stop}) is started again by
-     * the next request for it.
+     * the next request for it, which the BMS makes when it sees the bundle stop.
      */
     public Promise<InstalledBehaviour> stop(String symbolicName, String reason) {
         return onInstallerThread("stop of " + symbolicName, () -> {
             BehaviourRecord record = ledger.get(symbolicName).orElseThrow(() -> new InstallException(
                     Problem.NOT_INSTALLED, symbolicName + " is not installed by the Bundle Installer ('bis:list' shows"
                             + " what is)"));
+            // blocked before its bundle stops: the BMS, which sees it stop, asks for it and is refused
             ledger.block(symbolicName, "stopped-by-operator", reason);
             Bundle own = context.getBundle(record.own().location());
             try {
@@ -414,8 +415,11 @@ public final class Installer implements BundleInstaller {
                     + " Installer ('bis:list' shows what is)");
         }
         InstalledBehaviour dto = dto(record);
-        removeBundles(record);
+        // off the list first: whoever sees its bundle's UNINSTALLED event and then asks installed() (the BMS, which
+        // brings back a behaviour uninstalled outside the installer) finds it gone by the installer's own hand.
+        // removeBundles counts the other users of each bundle, which this removal does not change.
         ledger.remove(symbolicName, byOperator ? "uninstalled-by-operator" : "uninstalled", reason);
+        removeBundles(record);
         dto.state = "UNINSTALLED";
         info.accept("uninstalled " + symbolicName + " " + record.version() + " (" + reason + ")");
         return dto;
