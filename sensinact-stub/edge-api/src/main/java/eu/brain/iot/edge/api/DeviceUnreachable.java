@@ -4,7 +4,9 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
 
 /**
  * The edge lost a robot or a door: it failed to answer several polls in a row. Published once; the edge keeps
- * polling it with backoff and publishes {@link DeviceRecovered} when it answers again.
+ * polling it with backoff and publishes {@link DeviceRecovered} when it answers again, also when that is at another
+ * fleet URL the edge was configured to meanwhile; or {@link DeviceRemoved} if the device leaves the edge's model
+ * first (the new fleet does not have it, the configuration no longer names it).
  */
 public class DeviceUnreachable extends BrainIoTEvent {
 

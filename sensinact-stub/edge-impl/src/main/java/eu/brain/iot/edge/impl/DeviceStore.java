@@ -70,10 +70,35 @@ final class DeviceStore {
         providers.putIfAbsent(id, new Provider(id, kind));
     }
 
-    void remove(String id) {
-        if (providers.remove(id) != null) {
-            changes.removed(id);
+    /** The provider leaves the model; {@code reason} says why (the bus hears it for a robot or a door). */
+    void remove(String id, String reason) {
+        Provider p = providers.remove(id);
+        if (p != null) {
+            changes.removed(id, p.kind, reason);
         }
+    }
+
+    /**
+     * The device is polled at another fleet URL from now on ({@code fleet.url} changed), under the same id. Its
+     * values were the old fleet's, so they are dropped (a behaviour must not act on another fleet's position), and
+     * its next answer counts as its first: its events are derived afresh (its position announced, no mission end
+     * taken from the other fleet's history). An {@code UNREACHABLE} device stays so, with its time of failure, until
+     * the new fleet answers for it: then {@link #answered} tells its recovery, so that a behaviour told
+     * {@code DeviceUnreachable} hears {@code DeviceRecovered}. Any other device is {@code STALE} until then.
+     */
+    void moved(String id, String reason) {
+        Provider p = providers.get(id);
+        if (p == null) {
+            return;
+        }
+        if (p.status == ResourceStatus.UNREACHABLE) {
+            p.reason = reason + " (unreachable since " + Instant.ofEpochMilli(p.downSince) + ")";
+        } else {
+            status(p, ResourceStatus.STALE, reason); // listeners hear each resource go STALE before it is dropped
+        }
+        p.services.clear();
+        p.last = null;
+        changes.moved(id);
     }
 
     /**

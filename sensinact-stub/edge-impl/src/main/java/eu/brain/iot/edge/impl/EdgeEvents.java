@@ -6,6 +6,7 @@ import java.util.Objects;
 import eu.brain.iot.edge.api.CartLifted;
 import eu.brain.iot.edge.api.CartPlaced;
 import eu.brain.iot.edge.api.DeviceRecovered;
+import eu.brain.iot.edge.api.DeviceRemoved;
 import eu.brain.iot.edge.api.DeviceUnreachable;
 import eu.brain.iot.edge.api.DoorStateChanged;
 import eu.brain.iot.edge.api.ObstacleCleared;
@@ -16,7 +17,7 @@ import eu.brain.iot.edge.api.RobotPositionChanged;
 
 /**
  * The edge's events, derived from the changes of the device model ({@link ModelChanges}) and sent through the
- * {@link Outbox}: what a robot or door did between two answers, reachability, and (through the
+ * {@link Outbox}: what a robot or door did between two answers, reachability, a device's removal, and (through the
  * {@link MissionTracker}) mission ends. Called on the fleet thread only; keeps no state but the tracker's.
  */
 final class EdgeEvents implements ModelChanges {
@@ -54,8 +55,22 @@ final class EdgeEvents implements ModelChanges {
     }
 
     @Override
-    public void removed(String providerId) {
+    public void moved(String providerId) {
+        missions.forget(providerId); // mission ids are the old fleet's: none of its ends is news at the new one
+    }
+
+    @Override
+    public void removed(String providerId, DeviceKind kind, String reason) {
         missions.forget(providerId);
+        if (kind != DeviceKind.ROBOT && kind != DeviceKind.DOOR) {
+            return; // carts and the map have no bus events of their own (WorldReader)
+        }
+        // the last word on the device: a behaviour that was told DeviceUnreachable learns it will hear no recovery
+        DeviceRemoved e = new DeviceRemoved();
+        e.deviceId = providerId;
+        e.deviceKind = kind.label;
+        e.reason = reason;
+        outbox.publish(e);
     }
 
     /** @param before the previous answer, {@code null} the first time (then only the position is announced) */

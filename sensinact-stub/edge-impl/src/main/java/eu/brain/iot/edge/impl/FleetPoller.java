@@ -57,6 +57,11 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
     // fleet thread only
     private FleetSettings settings;
     private final Map<String, PolledDevice> devices = new HashMap<>();
+    /**
+     * Devices of the model that the fleet at a new {@code fleet.url} has not confirmed yet: not polled, their health
+     * at the old fleet kept for their successor (see {@link #unlist}). Empty outside that transition.
+     */
+    private final Map<String, PolledDevice> unlisted = new HashMap<>();
     private ScheduledFuture<?> discovery;
     private int discoveryFailures;
     /** Polls to send, earliest first. */
@@ -81,7 +86,14 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
 
     /** Applies a configuration (the first one, or a new one): devices are added and removed, nothing restarts. */
     void configure(FleetSettings next) {
-        fleet.execute(() -> apply(next));
+        fleet.execute(() -> {
+            try {
+                apply(next);
+            } catch (RuntimeException e) {
+                // the executor would keep it in a future no one reads: the configuration would fail without a word
+                log.warn("applying the configuration " + EdgeConfig.PID + " failed: " + e);
+            }
+        });
     }
 
     PollStats stats() {
@@ -92,17 +104,43 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
         FleetSettings previous = settings;
         api.configure(next);
         settings = next;
-        if (previous != null && !previous.baseUrl().equals(next.baseUrl())) {
-            setDevices(Map.of()); // every device answers elsewhere now
-        }
         cancelDiscovery();
+        if (previous != null && !previous.baseUrl().equals(next.baseUrl())) {
+            unlist(next); // every device answers elsewhere now, if the new fleet has it
+        }
         if (next.discover()) {
             discover();
         } else {
             Map<String, DeviceKind> wanted = new LinkedHashMap<>();
             next.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
             next.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
-            setDevices(wanted);
+            setDevices(wanted, "not in the configuration " + EdgeConfig.PID + " any more (robots, doors)");
+        }
+    }
+
+    /**
+     * {@code fleet.url} changed. The devices keep their ids in the model, since the usual case is the same robots at
+     * another address (a restarted simulator, a proxy): dropping and re-creating them, as the edge once did, told a
+     * behaviour that had heard {@code DeviceUnreachable} neither a recovery nor a removal, so it waited forever.
+     * Each stops being polled at the old fleet and waits here until the new fleet confirms it ({@link #setDevices}):
+     * at once when the configuration names the devices, when the fleet's inventory ({@code GET /}) answers
+     * otherwise. Meanwhile the model holds no values for it (they were the old fleet's) and keeps an unreachable
+     * device {@code UNREACHABLE}, the others {@code STALE}, with this reason; one the new fleet does not have is
+     * removed then, with a {@code DeviceRemoved} event. A fleet that never answers its inventory leaves them so,
+     * marked and explained, rather than live.
+     */
+    private void unlist(FleetSettings next) {
+        String reason = "fleet.url changed to " + next.baseUrl()
+                + (next.discover() ? ": waiting for its inventory (GET /)" : ": not polled there yet");
+        for (PolledDevice d : devices.values()) {
+            d.removed = true; // an answer still on its way from the old fleet is dropped, its due poll too
+            unlisted.put(d.id, d);
+        }
+        devices.clear();
+        unlisted.keySet().forEach(id -> store.moved(id, reason));
+        if (!unlisted.isEmpty()) {
+            log.info("fleet.url changed to " + next.baseUrl() + ": " + unlisted.size() + " device(s) kept under "
+                    + "their ids, polled there " + (next.discover() ? "once its inventory lists them" : "from now on"));
         }
     }
 
@@ -127,7 +165,8 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
         inventory.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
         log.info("fleet at " + asked.baseUrl() + ": " + inventory.robots().size() + " robots, "
                 + inventory.doors().size() + " doors");
-        setDevices(wanted);
+        setDevices(wanted, "not in the fleet at " + asked.baseUrl() + " (GET / lists " + inventory.robots().size()
+                + " robots, " + inventory.doors().size() + " doors)");
     }
 
     private void notDiscovered(FleetSettings asked, String problem) {
@@ -149,20 +188,38 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
         discoveryFailures = 0;
     }
 
-    private void setDevices(Map<String, DeviceKind> wanted) {
-        for (PolledDevice d : new ArrayList<>(devices.values())) {
-            if (wanted.get(d.id) != d.kind) {
-                devices.remove(d.id);
-                d.removed = true; // its entry in the due queue is dropped when it comes up
-                store.remove(d.id);
+    /**
+     * Polls these devices from now on: the others leave the model (with {@code removal} as the reason), new ones
+     * enter it, unlisted ones ({@link #unlist}) are polled at the new fleet URL, in the model all along.
+     */
+    private void setDevices(Map<String, DeviceKind> wanted, String removal) {
+        List<String> removed = new ArrayList<>();
+        for (Map<String, PolledDevice> known : List.of(devices, unlisted)) {
+            for (PolledDevice d : new ArrayList<>(known.values())) {
+                if (wanted.get(d.id) != d.kind) {
+                    known.remove(d.id);
+                    d.removed = true; // its entry in the due queue is dropped when it comes up
+                    store.remove(d.id, removal);
+                    removed.add(d.id);
+                }
             }
+        }
+        if (!removed.isEmpty()) {
+            log.info(removed.size() + " device(s) removed, " + removal + ": "
+                    + (removed.size() <= 10 ? removed : removed.subList(0, 10) + " and more"));
         }
         List<PolledDevice> added = new ArrayList<>();
         wanted.forEach((id, kind) -> {
             if (!devices.containsKey(id)) {
-                PolledDevice d = new PolledDevice(id, kind, api.stateUri(id, kind));
+                PolledDevice before = unlisted.remove(id);
+                PolledDevice d;
+                if (before != null) {
+                    d = before.successor(api.stateUri(id, kind), settings.unreachableAfter()); // in the model still
+                } else {
+                    d = new PolledDevice(id, kind, api.stateUri(id, kind));
+                    store.add(id, kind);
+                }
                 devices.put(id, d);
-                store.add(id, kind);
                 added.add(d);
             }
         });

@@ -22,6 +22,17 @@ interface ModelChanges {
     /** The device answers again after it was unreachable for {@code downMillis}. */
     void recovered(String providerId, DeviceKind kind, long downMillis);
 
-    /** The provider left the model (a new configuration or fleet). */
-    void removed(String providerId);
+    /**
+     * The device is polled at another fleet URL from now on ({@code fleet.url} changed): what was known of it came
+     * from the old fleet, and its next answer is taken as its first.
+     */
+    void moved(String providerId);
+
+    /**
+     * The provider left the model: the configuration no longer names it, the fleet's inventory no longer lists it
+     * (or, for a cart or the map, the fleet's world no longer holds it).
+     *
+     * @param reason why, for the event and the log
+     */
+    void removed(String providerId, DeviceKind kind, String reason);
 }

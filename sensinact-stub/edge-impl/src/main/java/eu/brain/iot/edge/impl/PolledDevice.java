@@ -36,4 +36,23 @@ final class PolledDevice {
         this.kind = kind;
         this.stateUri = stateUri;
     }
+
+    /**
+     * This device polled at another fleet URL ({@code fleet.url} changed): a schedule of its own and no answer yet
+     * (this one is dropped: an answer still on its way from the old fleet must not count), but an unreachable device
+     * stays unreachable, since it went down: the model tells its recovery when the new fleet answers for it, and
+     * tells nothing twice when it does not.
+     *
+     * @param unreachableAfter failed polls that make a device unreachable: its backoff starts over from the first step
+     */
+    PolledDevice successor(URI newStateUri, int unreachableAfter) {
+        removed = true;
+        PolledDevice next = new PolledDevice(id, kind, newStateUri);
+        if (unreachable) {
+            next.unreachable = true;
+            next.failures = unreachableAfter;
+            next.unreachableSinceMillis = unreachableSinceMillis;
+        }
+        return next;
+    }
 }

@@ -48,8 +48,10 @@ final class WorldReader {
             next.cancel(false);
             next = null;
         }
-        if (s.worldPeriodMillis() == 0 || previous != null && !previous.baseUrl().equals(s.baseUrl())) {
-            forgetAll(); // another fleet, or none: what was read is no longer true
+        if (s.worldPeriodMillis() == 0) {
+            forgetAll("world.period.ms is 0: the fleet's world is not read");
+        } else if (previous != null && !previous.baseUrl().equals(s.baseUrl())) {
+            forgetAll("fleet.url changed to " + s.baseUrl()); // another fleet: what was read is no longer true
         }
         if (s.worldPeriodMillis() > 0) {
             read();
@@ -93,7 +95,7 @@ final class WorldReader {
         for (String id : Set.copyOf(known)) {
             if (!seen.contains(id)) {
                 known.remove(id);
-                store.remove(id);
+                store.remove(id, "not in the fleet's world any more");
             }
         }
     }
@@ -116,8 +118,8 @@ final class WorldReader {
         }
     }
 
-    private void forgetAll() {
-        known.forEach(store::remove);
+    private void forgetAll(String reason) {
+        known.forEach(id -> store.remove(id, reason));
         known.clear();
     }
 }

@@ -20,6 +20,7 @@ import eu.brain.iot.edge.api.CartLifted;
 import eu.brain.iot.edge.api.CartPlaced;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.DeviceRecovered;
+import eu.brain.iot.edge.api.DeviceRemoved;
 import eu.brain.iot.edge.api.DeviceUnreachable;
 import eu.brain.iot.edge.api.DoorStateChanged;
 import eu.brain.iot.edge.api.EdgeCommand;
@@ -34,7 +35,7 @@ import eu.brain.iot.robotsim.view.RobotView;
 
 /**
  * A smart behaviour on the real bus that keeps every event the edge publishes (robot and door events, device
- * reachability, command outcomes), in the order the bus delivered them. Register it before the edge is configured
+ * reachability and removal, command outcomes), in the order the bus delivered them. Register it before the edge is configured
  * so that it sees the first positions too.
  */
 final class BusRecorder implements AutoCloseable {
@@ -50,7 +51,7 @@ final class BusRecorder implements AutoCloseable {
         Hashtable<String, Object> properties = new Hashtable<>();
         properties.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { RobotEvent.class.getName(),
                 DoorStateChanged.class.getName(), DeviceUnreachable.class.getName(),
-                DeviceRecovered.class.getName(), CommandOutcome.class.getName() });
+                DeviceRecovered.class.getName(), DeviceRemoved.class.getName(), CommandOutcome.class.getName() });
         SmartBehaviour<BrainIoTEvent> behaviour = events::add;
         registration = context.registerService(SmartBehaviour.class.getName(), behaviour, properties);
     }

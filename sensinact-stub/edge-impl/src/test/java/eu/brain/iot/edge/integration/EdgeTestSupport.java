@@ -30,6 +30,7 @@ import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollMonitor;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceStatus;
 import eu.brain.iot.robotsim.RobotSim;
@@ -196,6 +197,25 @@ final class EdgeTestSupport implements AutoCloseable {
         });
     }
 
+    /**
+     * Waits until the edge polls another fleet than the one at {@code base}, the last this test configured (Config
+     * Admin applies a change later).
+     */
+    private void awaitFleetLeft(String base) {
+        await("the edge leaves the fleet at " + base).atMost(DEADLINE).until(() -> {
+            ServiceReference<PollMonitor> ref = context.getServiceReference(PollMonitor.class);
+            if (ref == null) {
+                return true; // no edge: nothing polls the simulator
+            }
+            try {
+                PollMonitor monitor = context.getService(ref);
+                return monitor == null || !base.equals(monitor.statistics().fleetUrl);
+            } finally {
+                context.ungetService(ref);
+            }
+        });
+    }
+
     /** Where Felix HTTP listens (it binds a free port: run property org.osgi.service.http.port=0), once the edge's servlets are there. */
     private static URI awaitRest(BundleContext context) {
         return await("Felix HTTP with the edge's servlets").atMost(DEADLINE).until(() -> {
@@ -260,6 +280,9 @@ final class EdgeTestSupport implements AutoCloseable {
             }
             // the next test class must not meet servlets that are going away
             awaitServlets(restProperties, false);
+            // nor devices made UNREACHABLE by polls of this closed simulator: the edge keeps its devices across a
+            // change of fleet and would tell their recovery on the next test's bus
+            awaitFleetLeft((String) edgeProperties.get("fleet.url"));
         } catch (InvalidSyntaxException e) {
             throw new IllegalStateException(e);
         } finally {
