@@ -19,9 +19,9 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * <p>
  * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
  * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given
- * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart will not wall in
- * another free storage cell, and that makes the rest of the trip shortest (the path there plus the distance from it
- * to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
+ * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart cuts no free
+ * storage cell (nor the cell another robot carries its cart to) off from where the carts come from, and that makes
+ * the rest of the trip shortest (the path there plus the distance from it to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
  * <p>
  * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
  * another lock while holding its own).
@@ -186,25 +186,22 @@ final class Errands {
         if (e.drop() != null) {
             drops.remove(e.drop()); // chosen again, with what the warehouse looks like now
         }
-        Set<Cell> floor = new HashSet<>();
-        carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> floor.add(c.cell()));
-        floor.remove(at); // the cart it lifts
+        Set<Cell> walls = new HashSet<>(drops); // storage cells given to carts, carried there or put down
+        carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> walls.add(c.cell()));
+        walls.remove(at); // the cart it lifts
+        Map<Cell, Integer> steps = distances(grid, at, walls);
+        List<Cell> inFlight = errands.values().stream().filter(x -> x.leg() == Leg.TO_STORAGE && x.drop() != null
+                && !x.robot().equals(robot)).map(Errand::drop).toList();
+        List<Cell> free = grid.cells(Grid.STORAGE).stream().filter(steps::containsKey).toList();
+        // the rest of the trip counts too: a storage cell on the way home (near the dock's column) keeps the robots'
+        // ways home short and apart, instead of every robot crossing the docking rows to its dock
+        List<Cell> byTrip = free.stream().sorted(java.util.Comparator.comparingInt(
+                (Cell c) -> steps.get(c) + (e.dock() == null ? 0 : c.distance(e.dock())))).toList();
         Cell best = null;
-        int bestSteps = Integer.MAX_VALUE;
-        for (Cell c : grid.cells(Grid.STORAGE)) {
-            if (drops.contains(c) || floor.contains(c) || !leavesRoom(c, floor, grid)) {
-                continue;
-            }
-            int steps = grid.steps(at, c, floor);
-            if (steps == Integer.MAX_VALUE) {
-                continue;
-            }
-            // the rest of the trip counts too: a storage cell on the way home (near the dock's column) keeps the
-            // robots' ways home short and apart, instead of every robot crossing the docking rows to its dock
-            steps += e.dock() == null ? 0 : c.distance(e.dock());
-            if (steps < bestSteps) {
+        for (Cell c : byTrip) {
+            if (keepsStorageOpen(grid, at, c, walls, free, inFlight)) {
                 best = c;
-                bestSteps = steps;
+                break;
             }
         }
         if (best == null) {
@@ -272,24 +269,46 @@ final class Errands {
     }
 
     /**
-     * A cart at {@code c} must not cut a storage cell off from the rest of the warehouse for robots carrying carts:
-     * every free passable neighbour of {@code c} keeps a way out that avoids carts (and {@code c}).
+     * A cart put down at {@code c} must not cut any free storage cell, nor a cell another robot is carrying its cart
+     * to, off from where the carts come from (the robot's cell, under the cart it lifted): robots carrying carts
+     * cannot drive under other carts, so storage filled in the wrong order walls its own free cells in (seen in the
+     * 60x30 warehouse: its storage spans the whole width between the door and the docks, and with 57 of 60 carts
+     * put down, the last three robots found no free storage cell they could reach).
      */
-    private boolean leavesRoom(Cell c, Set<Cell> floor, Grid grid) {
-        Set<Cell> blocked = new HashSet<>(floor);
+    private static boolean keepsStorageOpen(Grid grid, Cell from, Cell c, Set<Cell> walls, List<Cell> free,
+            List<Cell> inFlight) {
+        Set<Cell> blocked = new HashSet<>(walls);
         blocked.add(c);
-        Set<Cell> mustReachOut = new HashSet<>(drops); // the cells other robots are carrying carts to
-        for (Cell n : grid.neighbours(c)) {
-            if (!blocked.contains(n) && grid.area(n) == Grid.STORAGE) {
-                mustReachOut.add(n);
+        Map<Cell, Integer> after = distances(grid, from, blocked);
+        for (Cell f : free) {
+            if (!f.equals(c) && !after.containsKey(f)) {
+                return false;
             }
         }
-        for (Cell n : mustReachOut) {
-            if (grid.nearest(n, x -> grid.area(x) != Grid.STORAGE, blocked) == null) {
+        for (Cell d : inFlight) { // reached when a neighbour is: the cell itself is the end of that robot's path
+            if (grid.neighbours(d).stream().noneMatch(after::containsKey)) {
                 return false;
             }
         }
         return true;
+    }
+
+    /** @return the steps from {@code from} to every cell reachable without entering a {@code blocked} cell */
+    private static Map<Cell, Integer> distances(Grid grid, Cell from, Set<Cell> blocked) {
+        Map<Cell, Integer> dist = new HashMap<>();
+        java.util.ArrayDeque<Cell> queue = new java.util.ArrayDeque<>();
+        dist.put(from, 0);
+        queue.add(from);
+        while (!queue.isEmpty()) {
+            Cell x = queue.poll();
+            for (Cell n : grid.neighbours(x)) {
+                if (!dist.containsKey(n) && !blocked.contains(n)) {
+                    dist.put(n, dist.get(x) + 1);
+                    queue.add(n);
+                }
+            }
+        }
+        return dist;
     }
 
     synchronized int delivered() {

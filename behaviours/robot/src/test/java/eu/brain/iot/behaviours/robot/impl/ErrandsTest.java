@@ -1,0 +1,148 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Optional;
+import java.util.Set;
+
+import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.FleetView.CartState;
+import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+
+/** The errand table's rules on small maps: where carts go in storage, taking robots over, failed go-tos. */
+class ErrandsTest {
+
+    /**
+     * Storage that spans the whole width between the door and the docks, as in robot-sim's generated warehouses:
+     * carriers come up from the door (row 7), the docks are on top. Filling it must never wall a free storage cell
+     * in: every cart up to the last finds a cell a robot carrying it can reach (the 60x30 warehouse's last three
+     * robots found none).
+     */
+    private static final Grid BAND = Grid.parse(String.join("\n",
+            "##############",
+            "#dddddddddddd#",
+            "#............#",
+            "#ssssssssssss#",
+            "#ssssssssssss#",
+            "#ssssssssssss#",
+            "#............#",
+            "######D#######",
+            "#uuuuuuuuuuuu#",
+            "##############"));
+
+    @Test
+    void storageIsFilledToTheLastCellWithoutWallingAnyIn() {
+        Errands errands = new Errands(6);
+        Cell cartCell = new Cell(6, 8);
+        List<CartState> carts = new ArrayList<>();
+        int storage = BAND.cells(Grid.STORAGE).size();
+        for (int n = 0; n < storage; n++) {
+            int k = n % 12 + 1; // twelve robots, each with a dock of its own along the top row
+            String robot = "robot" + k;
+            Cell dock = new Cell(k, 1);
+            errands.seen(robot, dock, true);
+            carts.add(new CartState("cart" + n, cartCell, null));
+            assertThat(errands.claim(robot, dock, carts, BAND)).as("cart %d claimed", n).isPresent();
+            Optional<Errands.Errand> e = errands.lifted(robot, cartCell, carriedBy(carts, n, robot), BAND);
+            assertThat(e).as("a storage cell for cart %d of %d (placed so far: %s)", n + 1, storage, carts)
+                    .isPresent();
+            Cell drop = e.get().drop();
+            assertThat(BAND.path(cartCell, drop, floor(carts))).as("cart %d can be carried to %s", n, drop)
+                    .isNotNull();
+            carts.set(n, new CartState("cart" + n, drop, null)); // put down there
+            errands.placed(robot);
+            errands.docked(robot);
+        }
+        assertThat(carts).extracting(CartState::cell).doesNotHaveDuplicates()
+                .allMatch(c -> BAND.area(c) == Grid.STORAGE);
+    }
+
+    @Test
+    void aRobotTakenOverCarryingACartCarriesItToStorageAndGetsAFreeDock() {
+        Errands errands = new Errands(6);
+        RobotState docked = robot("robot1", new Cell(1, 1), null, null, null);
+        RobotState carrier = robot("robot2", new Cell(4, 6), "cart7", "running", new Cell(5, 4));
+        List<CartState> carts = List.of(new CartState("cart7", new Cell(4, 6), "robot2"));
+        List<RobotState> all = List.of(docked, carrier);
+
+        assertThat(errands.adopt(docked, carts, BAND, all)).isTrue();
+        assertThat(errands.of("robot1").leg()).isEqualTo(Errands.Leg.NONE);
+        assertThat(errands.adopt(carrier, carts, BAND, all)).isTrue();
+        Errands.Errand e = errands.of("robot2");
+        assertThat(e.leg()).isEqualTo(Errands.Leg.TO_STORAGE);
+        assertThat(e.cart()).isEqualTo("cart7");
+        assertThat(e.drop()).as("the storage cell it was heading for").isEqualTo(new Cell(5, 4));
+        assertThat(e.dock()).as("the nearest docking cell that is nobody's").isNotNull()
+                .isNotEqualTo(new Cell(1, 1));
+        assertThat(errands.adopt(carrier, carts, BAND, all)).as("taken over once").isFalse();
+    }
+
+    @Test
+    void aRobotTakenOverOnItsWayToACartKeepsThatCartAndOneOutWithoutWorkGoesHome() {
+        Errands errands = new Errands(6);
+        RobotState toCart = robot("robot1", new Cell(4, 6), null, "running", new Cell(7, 8));
+        RobotState out = robot("robot2", new Cell(3, 2), null, "finished", null);
+        List<CartState> carts = List.of(new CartState("cart1", new Cell(7, 8), null));
+        List<RobotState> all = List.of(toCart, out);
+
+        errands.adopt(toCart, carts, BAND, all);
+        errands.adopt(out, carts, BAND, all);
+
+        assertThat(errands.of("robot1").leg()).isEqualTo(Errands.Leg.TO_CART);
+        assertThat(errands.of("robot1").cart()).isEqualTo("cart1");
+        assertThat(errands.of("robot2").leg()).isEqualTo(Errands.Leg.TO_DOCK);
+        assertThat(errands.workLeft(carts, BAND)).as("cart1 is claimed").isFalse();
+    }
+
+    @Test
+    void aFailedGoToToTheStorageCellGivesAnotherCellAndAFailedOneToTheCartGivesTheCartBack() {
+        Errands errands = new Errands(6);
+        Cell dock = new Cell(2, 1);
+        Cell cartCell = new Cell(4, 8);
+        errands.seen("robot1", dock, true);
+        List<CartState> carts = new ArrayList<>(List.of(new CartState("cart1", cartCell, null)));
+        errands.claim("robot1", dock, carts, BAND);
+        Cell first = errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
+                .orElseThrow().drop();
+
+        // another cart stands there now (put down since; the device model did not show it yet)
+        List<CartState> now = List.of(new CartState("cart1", new Cell(4, 6), "robot1"),
+                new CartState("cart9", first, null));
+        assertThat(errands.goalFailed("robot1", new Cell(4, 6), first, now, BAND)).isTrue();
+        assertThat(errands.of("robot1").drop()).isNotNull().isNotEqualTo(first);
+        assertThat(errands.goalFailed("robot1", new Cell(4, 6), new Cell(1, 1), now, BAND))
+                .as("a go-to that was not the errand's").isFalse();
+
+        errands.seen("robot2", new Cell(3, 1), true);
+        List<CartState> floor = List.of(new CartState("cart2", new Cell(8, 8), null));
+        errands.placed("robot1");
+        errands.docked("robot1");
+        errands.claim("robot2", new Cell(3, 1), floor, BAND);
+        assertThat(errands.goalFailed("robot2", new Cell(3, 1), new Cell(8, 8), floor, BAND)).isTrue();
+        assertThat(errands.of("robot2").leg()).isEqualTo(Errands.Leg.NONE);
+        assertThat(errands.workLeft(floor, BAND)).as("cart2 back on the table").isTrue();
+    }
+
+    private static List<CartState> carriedBy(List<CartState> carts, int n, String robot) {
+        List<CartState> now = new ArrayList<>(carts);
+        now.set(n, new CartState("cart" + n, carts.get(n).cell(), robot));
+        return now;
+    }
+
+    private static Set<Cell> floor(List<CartState> carts) {
+        Set<Cell> cells = new HashSet<>();
+        carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> cells.add(c.cell()));
+        return cells;
+    }
+
+    private static RobotState robot(String id, Cell cell, String cart, String missionState, Cell goal) {
+        return new RobotState(id, cell, "N", BAND.area(cell), "running".equals(missionState), 0, cart,
+                missionState == null ? null : 1L, missionState == null ? null : "goto", missionState, goal, true);
+    }
+}
