@@ -131,6 +131,25 @@ final class Errands {
         return errands.getOrDefault(robot, new Errand(robot, Leg.NONE, null, null, null, docks.get(robot)));
     }
 
+    /**
+     * Where the robot, out on the floor, enters the docking area on its way home: the nearest cell outside the
+     * docking area from its dock, reached through docking cells that are no other robot's dock. It is sent there
+     * first, then to its dock: robot-sim's shortest path from storage otherwise ran along the docking rows, past
+     * robots parked at their docks, which the orchestrator then had to send aside (the 60x30 warehouse's longest
+     * waits).
+     *
+     * @return the cell, or {@code null} when the robot's dock is unknown or no such cell exists
+     */
+    synchronized Cell approach(String robot, Grid grid) {
+        Cell dock = docks.get(robot);
+        if (dock == null) {
+            return null;
+        }
+        Set<Cell> others = new HashSet<>(docks.values());
+        others.remove(dock);
+        return grid.nearest(dock, c -> grid.area(c) != Grid.DOCKING, others);
+    }
+
     /** @return whether some cart on the floor outside storage is claimed by nobody */
     synchronized boolean workLeft(List<CartState> carts, Grid grid) {
         return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));

@@ -52,6 +52,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * UNLOAD   e carries to storage, s stands on its storage cell, idle       unloadToStorage        inStorage, 0
  * STORAGE  e goes home, s stands on its dock, idle                        storageToDocking       inDocking, 0
  * UNLOAD     (the same, when it went home through a resolved collision)
+ * STORAGE  e goes home, s idle elsewhere (where it enters the docking     (none: RobotFleet.resume sends it on)
+ *          area, or a go-to lost)
  * UNLOAD   idle before its errand's goal, or without one while a cart     (none: RobotFleet.resume sends the go-to)
  *          waits (a go-to cancelled, lost or never sent)
  * </pre>
@@ -250,6 +252,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
                     storageToDocking(in);
+                } else if (e.leg() == Errands.Leg.TO_DOCK && s.idle() && !s.carrying()) {
+                    // at the cell where it enters the docking area (RobotFleet#homeward), or its go-to was lost
+                    fleet.resume(robot, "idle before its dock");
                 }
             }
             default -> {

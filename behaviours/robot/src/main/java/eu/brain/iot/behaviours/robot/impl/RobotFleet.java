@@ -165,8 +165,21 @@ public final class RobotFleet {
             return; // the wave's last robots still come down through the door: it waits with its cart
         }
         if (goal != null) {
-            goTo(robot, s, goal, why);
+            goTo(robot, s, homeward(robot, s, goal, grid.get()), why);
         }
+    }
+
+    /**
+     * A goal that is the robot's dock becomes, for a robot out on the floor (not in the docking area), the cell
+     * where it enters the docking area ({@link Errands#approach}); from there it is sent to its dock (the binding
+     * finds it idle before its goal). Any other goal is kept.
+     */
+    private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
+        if (!goal.equals(errands.of(robot).dock()) || grid.area(s.cell()) == Grid.DOCKING) {
+            return goal;
+        }
+        Cell approach = errands.approach(robot, grid);
+        return approach == null || approach.equals(s.cell()) ? goal : approach;
     }
 
     /**
@@ -239,8 +252,9 @@ public final class RobotFleet {
         Errands.Errand e = errands.placed(robot);
         Optional<RobotState> s = view.robot(robot);
         sentGoal.remove(robot);
-        if (e.dock() != null && s.isPresent()) {
-            goTo(robot, s.get(), e.dock(), "going home");
+        Optional<Grid> grid = view.grid();
+        if (e.dock() != null && s.isPresent() && grid.isPresent()) {
+            goTo(robot, s.get(), homeward(robot, s.get(), e.dock(), grid.get()), "going home");
         }
     }
 
