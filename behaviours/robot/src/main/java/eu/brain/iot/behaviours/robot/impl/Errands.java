@@ -132,22 +132,21 @@ final class Errands {
     }
 
     /**
-     * Where the robot, out on the floor, enters the docking area on its way home: the nearest cell outside the
-     * docking area from its dock, reached through docking cells that are no other robot's dock. It is sent there
-     * first, then to its dock: robot-sim's shortest path from storage otherwise ran along the docking rows, past
-     * robots parked at their docks, which the orchestrator then had to send aside (the 60x30 warehouse's longest
-     * waits).
+     * Where the robot crosses the edge of the docking area nearest to {@code from}: the nearest cell outside the
+     * docking area, reached through docking cells that are no other robot's dock. A robot going home is sent to the
+     * one nearest its dock first, then to its dock; a robot leaving the docking area is sent to the one nearest to
+     * it first, then on. robot-sim plans the shortest path, robots ignored: without this, robots ran along the docking
+     * rows past robots parked at their docks, which the orchestrator then sent aside one after the other (the
+     * 60x30 warehouse's longest waits, 10-15 s).
      *
-     * @return the cell, or {@code null} when the robot's dock is unknown or no such cell exists
+     * @param from the robot's dock (going home) or its cell (leaving)
+     * @return the cell, or {@code null} when none exists
      */
-    synchronized Cell approach(String robot, Grid grid) {
-        Cell dock = docks.get(robot);
-        if (dock == null) {
-            return null;
-        }
+    synchronized Cell edgeOfDocking(String robot, Cell from, Grid grid) {
         Set<Cell> others = new HashSet<>(docks.values());
-        others.remove(dock);
-        return grid.nearest(dock, c -> grid.area(c) != Grid.DOCKING, others);
+        others.remove(docks.get(robot));
+        others.remove(from);
+        return grid.nearest(from, c -> grid.area(c) != Grid.DOCKING, others);
     }
 
     /** @return whether some cart on the floor outside storage is claimed by nobody */

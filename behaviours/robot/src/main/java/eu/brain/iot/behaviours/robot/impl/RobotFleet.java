@@ -170,16 +170,21 @@ public final class RobotFleet {
     }
 
     /**
-     * A goal that is the robot's dock becomes, for a robot out on the floor (not in the docking area), the cell
-     * where it enters the docking area ({@link Errands#approach}); from there it is sent to its dock (the binding
-     * finds it idle before its goal). Any other goal is kept.
+     * The way in and out of the docking area ({@link Errands#edgeOfDocking}): a robot out on the floor going to its
+     * dock is sent first to the cell where its dock meets the floor; a robot in the docking area going out onto
+     * the floor is sent first to the floor cell nearest to it. From there the binding finds it idle before its goal
+     * and sends it on. Any other goal is kept.
      */
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
-        if (!goal.equals(errands.of(robot).dock()) || grid.area(s.cell()) == Grid.DOCKING) {
-            return goal;
+        boolean inDocking = grid.area(s.cell()) == Grid.DOCKING;
+        Cell dock = errands.of(robot).dock();
+        Cell via = null;
+        if (goal.equals(dock) && !inDocking) {
+            via = errands.edgeOfDocking(robot, dock, grid);
+        } else if (inDocking && grid.area(goal) != Grid.DOCKING) {
+            via = errands.edgeOfDocking(robot, s.cell(), grid);
         }
-        Cell approach = errands.approach(robot, grid);
-        return approach == null || approach.equals(s.cell()) ? goal : approach;
+        return via == null || via.equals(s.cell()) ? goal : via;
     }
 
     /**
