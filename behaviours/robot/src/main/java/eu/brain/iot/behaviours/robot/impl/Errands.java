@@ -149,6 +149,37 @@ final class Errands {
         return grid.nearest(from, c -> grid.area(c) != Grid.DOCKING, others);
     }
 
+    /**
+     * The first straight leg of the way from {@code from} to {@code to} through no other robot's dock: robot-sim
+     * plans its own shortest path (A*, ties broken its way), which between two cells of one row or column is that
+     * straight line and nothing else, so a go-to to the end of the first straight leg takes the robot exactly there.
+     * Used in and next to the docking area, where two shortest paths may differ by running through a parked
+     * robot's dock.
+     *
+     * @return the end of the first straight leg, or {@code to} when there is no such way
+     */
+    synchronized Cell straightToward(String robot, Cell from, Cell to, Grid grid) {
+        Set<Cell> others = new HashSet<>(docks.values());
+        others.remove(docks.get(robot));
+        others.remove(from);
+        others.remove(to);
+        List<Cell> path = grid.path(from, to, others);
+        if (path == null || path.isEmpty()) {
+            return to;
+        }
+        Cell last = path.get(0);
+        int dx = last.x() - from.x();
+        int dy = last.y() - from.y();
+        for (int i = 1; i < path.size(); i++) {
+            Cell c = path.get(i);
+            if (c.x() - last.x() != dx || c.y() - last.y() != dy) {
+                break;
+            }
+            last = c;
+        }
+        return last;
+    }
+
     /** @return whether some cart on the floor outside storage is claimed by nobody */
     synchronized boolean workLeft(List<CartState> carts, Grid grid) {
         return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));

@@ -170,21 +170,24 @@ public final class RobotFleet {
     }
 
     /**
-     * The way in and out of the docking area ({@link Errands#edgeOfDocking}): a robot out on the floor going to its
-     * dock is sent first to the cell where its dock meets the floor; a robot in the docking area going out onto
-     * the floor is sent first to the floor cell nearest to it. From there the binding finds it idle before its goal
-     * and sends it on. Any other goal is kept.
+     * The way in and out of the docking area ({@link Errands#edgeOfDocking}, {@link Errands#straightToward}): a
+     * robot out on the floor going to its dock is sent first to the floor cell where its dock meets the floor, then
+     * into the docking area leg by straight leg, through no other robot's dock; a robot in the docking area going
+     * out onto the floor is sent leg by straight leg to the floor cell nearest to it. At the end of each leg the
+     * binding finds it idle before its goal and sends it on. Any other goal is kept: on the floor robot-sim plans.
      */
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
         boolean inDocking = grid.area(s.cell()) == Grid.DOCKING;
         Cell dock = errands.of(robot).dock();
-        Cell via = null;
         if (goal.equals(dock) && !inDocking) {
-            via = errands.edgeOfDocking(robot, dock, grid);
-        } else if (inDocking && grid.area(goal) != Grid.DOCKING) {
-            via = errands.edgeOfDocking(robot, s.cell(), grid);
+            Cell edge = errands.edgeOfDocking(robot, dock, grid);
+            return edge != null && !edge.equals(s.cell()) ? edge : errands.straightToward(robot, s.cell(), goal, grid);
         }
-        return via == null || via.equals(s.cell()) ? goal : via;
+        if (!inDocking) {
+            return goal;
+        }
+        Cell target = grid.area(goal) == Grid.DOCKING ? goal : errands.edgeOfDocking(robot, s.cell(), grid);
+        return target == null ? goal : errands.straightToward(robot, s.cell(), target, grid);
     }
 
     /**

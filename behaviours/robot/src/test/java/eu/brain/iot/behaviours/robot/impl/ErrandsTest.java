@@ -153,6 +153,12 @@ class ErrandsTest {
         assertThat(errands.edgeOfDocking("robot1", new Cell(1, 1), twoRows)).isEqualTo(new Cell(2, 3));
         // a robot sent aside to a docking cell leaves from where it stands
         assertThat(errands.edgeOfDocking("robot2", new Cell(6, 2), twoRows)).isEqualTo(new Cell(6, 3));
+
+        // robot-sim's own shortest path from (1,1) to (2,3) may run through robot3's dock: the go-to is the first
+        // straight leg of a way round it, which robot-sim can only take as it is
+        assertThat(errands.straightToward("robot1", new Cell(1, 1), new Cell(2, 3), twoRows)).isEqualTo(new Cell(2, 1));
+        assertThat(errands.straightToward("robot1", new Cell(2, 1), new Cell(2, 3), twoRows)).isEqualTo(new Cell(2, 3));
+        assertThat(errands.straightToward("robot1", new Cell(2, 3), new Cell(1, 1), twoRows)).isEqualTo(new Cell(2, 1));
     }
 
     private static List<CartState> carriedBy(List<CartState> carts, int n, String robot) {
