@@ -139,12 +139,12 @@ final class Errands {
      * rows past robots parked at their docks, which the orchestrator then sent aside one after the other (the
      * 60x30 warehouse's longest waits, 10-15 s).
      *
-     * @param from the robot's dock (going home) or its cell (leaving)
+     * @param from   the robot's dock (going home) or its cell (leaving)
+     * @param parked the cells of the other robots that stand idle in the docking area
      * @return the cell, or {@code null} when none exists
      */
-    synchronized Cell edgeOfDocking(String robot, Cell from, Grid grid) {
-        Set<Cell> others = new HashSet<>(docks.values());
-        others.remove(docks.get(robot));
+    synchronized Cell edgeOfDocking(String robot, Cell from, Grid grid, Set<Cell> parked) {
+        Set<Cell> others = others(robot, parked);
         others.remove(from);
         return grid.nearest(from, c -> grid.area(c) != Grid.DOCKING, others);
     }
@@ -158,9 +158,8 @@ final class Errands {
      *
      * @return the end of the first straight leg, or {@code to} when there is no such way
      */
-    synchronized Cell straightToward(String robot, Cell from, Cell to, Grid grid) {
-        Set<Cell> others = new HashSet<>(docks.values());
-        others.remove(docks.get(robot));
+    synchronized Cell straightToward(String robot, Cell from, Cell to, Grid grid, Set<Cell> parked) {
+        Set<Cell> others = others(robot, parked);
         others.remove(from);
         others.remove(to);
         List<Cell> path = grid.path(from, to, others);
@@ -178,6 +177,14 @@ final class Errands {
             last = c;
         }
         return last;
+    }
+
+    /** Other robots' docks, and the cells where other robots stand parked (their docks may not be known yet). */
+    private Set<Cell> others(String robot, Set<Cell> parked) {
+        Set<Cell> others = new HashSet<>(docks.values());
+        others.addAll(parked);
+        others.remove(docks.get(robot));
+        return others;
     }
 
     /** @return whether some cart on the floor outside storage is claimed by nobody */

@@ -179,15 +179,20 @@ public final class RobotFleet {
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
         boolean inDocking = grid.area(s.cell()) == Grid.DOCKING;
         Cell dock = errands.of(robot).dock();
-        if (goal.equals(dock) && !inDocking) {
-            Cell edge = errands.edgeOfDocking(robot, dock, grid);
-            return edge != null && !edge.equals(s.cell()) ? edge : errands.straightToward(robot, s.cell(), goal, grid);
-        }
-        if (!inDocking) {
+        if (!inDocking && !goal.equals(dock)) {
             return goal;
         }
-        Cell target = grid.area(goal) == Grid.DOCKING ? goal : errands.edgeOfDocking(robot, s.cell(), grid);
-        return target == null ? goal : errands.straightToward(robot, s.cell(), target, grid);
+        // the others parked in the docking area: at the start, before every robot was seen, their docks are unknown
+        java.util.Set<Cell> parked = new java.util.HashSet<>();
+        view.robots().stream().filter(o -> !o.id().equals(robot) && o.idle() && grid.area(o.cell()) == Grid.DOCKING)
+                .forEach(o -> parked.add(o.cell()));
+        if (!inDocking) {
+            Cell edge = errands.edgeOfDocking(robot, dock, grid, parked);
+            return edge != null && !edge.equals(s.cell()) ? edge
+                    : errands.straightToward(robot, s.cell(), goal, grid, parked);
+        }
+        Cell target = grid.area(goal) == Grid.DOCKING ? goal : errands.edgeOfDocking(robot, s.cell(), grid, parked);
+        return target == null ? goal : errands.straightToward(robot, s.cell(), target, grid, parked);
     }
 
     /**
