@@ -21,7 +21,8 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given
  * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart cuts no free
  * storage cell (nor the cell another robot carries its cart to) off from where the carts come from, and that makes
- * the rest of the trip shortest (the path there plus the distance from it to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
+ * the rest of the trip shortest (the path there plus the distance from it to the robot's dock); after placing it,
+ * it heads for its dock (the docking cell where it was first seen).
  * <p>
  * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
  * another lock while holding its own).
@@ -107,7 +108,8 @@ final class Errands {
         }
         Cell dock = docks.get(robot);
         if (s.carrying()) {
-            Cell drop = !s.idle() && s.goal() != null && grid.area(s.goal()) == Grid.STORAGE && !drops.contains(s.goal())
+            Cell drop = !s.idle() && s.goal() != null && grid.area(s.goal()) == Grid.STORAGE
+                    && !drops.contains(s.goal())
                     && carts.stream().noneMatch(c -> c.carriedBy() == null && c.cell().equals(s.goal()))
                     ? s.goal() : null;
             if (drop != null) {
