@@ -19,7 +19,9 @@ import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
 import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
+import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
+import eu.brain.iot.behaviours.warehouse.Grid;
 import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -45,7 +47,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * START    s.detect != door, or the door ahead is closed; e has a goal    unloadLocation         area(s), 0
  *          or a cart waits for a robot and the wave is open (Errands)
  * UNLOAD   s moved to another cell                                        unloadToUnload         area(s), 0
- * UNLOAD   s stopped in front of a closed door (detect 2)                 fromUnloadObstacle     area(s), isDoor
+ * UNLOAD   s stopped in front of a closed door (detect 2), or driving     fromUnloadObstacle     area(s), isDoor
+ *          towards one within DOOR_LOOKAHEAD cells on its way
  * UNLOAD   s stopped behind a robot (detect 1) for patience polls         fromUnloadObstacle     area(s), isObstacle
  * STORAGE    (the same, on its way home)
  * UNLOAD   e goes for a cart, s stands on it, idle, carries none          fromUnloadObstacle     area(s), inFrontOfCart
@@ -82,6 +85,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     static final int IS_OBSTACLE = 4;
     static final int IS_DOOR = 5;
     static final int IN_FRONT_OF_CART = 6;
+    /** Cells ahead on a robot's way within which a closed door is reported ({@link #closedDoorOnItsWay}). */
+    static final int DOOR_LOOKAHEAD = 3;
 
     private final RobotFleet fleet;
     private final EventBus bus;
@@ -265,7 +270,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     /** A stop in front of a closed door, or behind a robot for longer than the patience: reported. */
     private boolean obstacle(String robot, RobotState s, Instance in, double area, long now) {
-        if (s.detect() == 2 && doorAheadClosed(s)) {
+        if (s.detect() == 2 && doorAheadClosed(s) || closedDoorOnItsWay(s)) {
             fromUnloadObstacle(in, area, IS_DOOR);
             return true;
         }
@@ -278,6 +283,34 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             return true;
         }
         return false;
+    }
+
+    /**
+     * A robot driving towards a closed door reports it {@link #DOOR_LOOKAHEAD} cells before it, as its sensor would
+     * see the door ahead on its way: the door opens (robot-sim: 4 steps) while the robot drives up to it, instead of
+     * after it stopped in front of it with the robots behind it stopped too. Its way is the fleet's plan (a shortest
+     * path, robots ignored; around the other carts when it carries one).
+     */
+    private boolean closedDoorOnItsWay(RobotState s) {
+        if (!s.running() || s.goal() == null) {
+            return false;
+        }
+        List<DoorState> closed = fleet.view().doors().stream().filter(d -> d.cell().distance(s.cell())
+                <= DOOR_LOOKAHEAD && ("closed".equals(d.state()) || "closing".equals(d.state()))).toList();
+        Optional<Grid> grid = closed.isEmpty() ? Optional.empty() : fleet.view().grid();
+        if (grid.isEmpty()) {
+            return false;
+        }
+        Set<Cell> carts = new HashSet<>();
+        if (s.carrying()) {
+            fleet.view().carts().stream().filter(c -> c.carriedBy() == null).forEach(c -> carts.add(c.cell()));
+        }
+        List<Cell> way = grid.get().path(s.cell(), s.goal(), carts);
+        if (way == null) {
+            return false;
+        }
+        List<Cell> next = way.subList(0, Math.min(DOOR_LOOKAHEAD, way.size()));
+        return closed.stream().anyMatch(d -> next.contains(d.cell()));
     }
 
     private boolean doorAheadClosed(RobotState s) {
