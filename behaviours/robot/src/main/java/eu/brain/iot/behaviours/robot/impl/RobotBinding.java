@@ -183,7 +183,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         return Map.entry(type, event -> make.apply(type.cast(event)));
     }
 
-    /** The binding thread's treatment of each input, as that of its event before the inputs were typed. */
+    /** The binding thread's treatment of each kind of input. */
     private final class InputHandler implements RobotInput.Handler {
 
         @Override
