@@ -3,6 +3,9 @@ package eu.brain.iot.behaviours.door.impl;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -42,12 +45,21 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
  * components with a service until someone gets it).
  * <p>
- * Threads: {@link #notify} hands every event to the binding's own thread, which owns the state and publishes.
+ * Threads: {@link #notify} (the bus's delivery thread) makes of every event a {@link DoorInput} ({@link #INPUTS}) and
+ * hands it to the binding's own thread, which handles it ({@link InputHandler}), owns the state and publishes.
  */
 @Component(service = SmartBehaviour.class, configurationPid = DoorConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { DoorStateChanged.class, CommandOutcome.class }, author = "BRAIN-IoT fabric",
         name = "Door binding", description = "Binds the door model's ports to the edge's door events")
 public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
+
+    /**
+     * What each consumed event type (the list above: the two must name the same types, DoorInputTest) becomes for the
+     * binding thread, made on the bus thread.
+     */
+    static final Map<Class<? extends BrainIoTEvent>, Function<BrainIoTEvent, DoorInput>> INPUTS = Map.ofEntries(
+            input(DoorStateChanged.class, d -> new DoorInput.StateChanged(d.doorId, d.state)),
+            input(CommandOutcome.class, DoorInput.Outcome::new));
 
     private static final System.Logger LOG = System.getLogger(DoorBinding.class.getName());
 
@@ -57,6 +69,9 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
     private final int closeAfter;
     private final int near;
     private final BindingThread thread;
+    private final DoorInput.Handler handler = new InputHandler();
+    /** Event types delivered that {@link #INPUTS} does not know (none: see {@link #notify}), each logged once. */
+    private final Set<Class<?>> dropped = ConcurrentHashMap.newKeySet();
 
     // binding thread only
     private final Map<String, Integer> quietLooks = new HashMap<>();
@@ -81,14 +96,51 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Override
     public void notify(BrainIoTEvent event) {
-        thread.execute(() -> {
-            if (event instanceof CommandOutcome o) {
-                control.outcome(o);
-            } else if (event instanceof DoorStateChanged d) {
-                LOG.log(System.Logger.Level.DEBUG, "{0} is {1}", d.doorId, d.state);
-                closedWhenOpenInModel("closed".equals(d.state));
+        DoorInput input = inputOf(event);
+        if (input == null) {
+            // cannot happen: the bus delivers only the consumed types (and their subtypes), the table's keys
+            if (dropped.add(event.getClass())) {
+                LOG.log(System.Logger.Level.WARNING, "door binding: {0} is not a consumed event type: dropped",
+                        event.getClass().getName());
             }
-        });
+            return;
+        }
+        thread.execute(() -> input.handle(handler));
+    }
+
+    /**
+     * @return the input the event becomes, by its class or the nearest superclass in {@link #INPUTS} (the bus
+     *         delivers the consumed types' subtypes too); null for an event of a type the table does not know
+     */
+    static DoorInput inputOf(BrainIoTEvent event) {
+        for (Class<?> c = event.getClass(); c != null; c = c.getSuperclass()) {
+            Function<BrainIoTEvent, DoorInput> make = INPUTS.get(c);
+            if (make != null) {
+                return make.apply(event);
+            }
+        }
+        return null;
+    }
+
+    /** An entry of {@link #INPUTS}: events of {@code type} become {@code make}'s input. */
+    private static <E extends BrainIoTEvent> Map.Entry<Class<? extends BrainIoTEvent>,
+            Function<BrainIoTEvent, DoorInput>> input(Class<E> type, Function<E, DoorInput> make) {
+        return Map.entry(type, event -> make.apply(type.cast(event)));
+    }
+
+    /** The binding thread's treatment of each kind of input. */
+    private final class InputHandler implements DoorInput.Handler {
+
+        @Override
+        public void outcome(DoorInput.Outcome o) {
+            control.outcome(o.outcome());
+        }
+
+        @Override
+        public void stateChanged(DoorInput.StateChanged d) {
+            LOG.log(System.Logger.Level.DEBUG, "{0} is {1}", d.door(), d.state());
+            closedWhenOpenInModel("closed".equals(d.state()));
+        }
     }
 
     /**

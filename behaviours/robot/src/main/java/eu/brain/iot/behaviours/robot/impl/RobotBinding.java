@@ -6,6 +6,8 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -71,8 +73,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
  * components with a service until someone gets it).
  * <p>
- * Threads: {@link #notify} (the bus's delivery thread) hands every event to the binding's own thread, which owns
- * all of this class's state and is the only one that evaluates the rules and publishes.
+ * Threads: {@link #notify} (the bus's delivery thread) makes of every event a {@link RobotInput} ({@link #INPUTS}) and
+ * hands it to the binding's own thread, which handles it ({@link InputHandler}), owns all of this class's state and is
+ * the only one that evaluates the rules and publishes.
  */
 @Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { RobotPositionChanged.class, ObstacleDetected.class, ObstacleCleared.class,
@@ -80,6 +83,22 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
         DeviceRecovered.class }, author = "BRAIN-IoT fabric", name = "Robot binding",
         description = "Binds the robot model's ports to the edge's robot events")
 public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
+
+    /**
+     * What each consumed event type (the list above: the two must name the same types, RobotInputTest) becomes for the
+     * binding thread, made on the bus thread.
+     */
+    static final Map<Class<? extends BrainIoTEvent>, Function<BrainIoTEvent, RobotInput>> INPUTS = Map.ofEntries(
+            input(RobotPositionChanged.class, p -> new RobotInput.Moved(p.robotId)),
+            input(ObstacleDetected.class, o -> new RobotInput.Obstacle(o.robotId, false)),
+            input(ObstacleCleared.class, o -> new RobotInput.Obstacle(o.robotId, true)),
+            input(MissionFinished.class,
+                    m -> new RobotInput.MissionEnded(m.robotId, m.missionType, m.goalX, m.goalY, false, null)),
+            input(MissionFailed.class,
+                    m -> new RobotInput.MissionEnded(m.robotId, m.missionType, m.goalX, m.goalY, true, m.reason)),
+            input(CommandOutcome.class, RobotInput.Outcome::new),
+            input(DeviceUnreachable.class, u -> new RobotInput.Unreachable(u.deviceId, u.reason)),
+            input(DeviceRecovered.class, r -> new RobotInput.Recovered(r.deviceId, r.deviceKind, r.downMillis)));
 
     private static final System.Logger LOG = System.getLogger(RobotBinding.class.getName());
     static final int IS_OBSTACLE = 4;
@@ -93,6 +112,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private final RobotBehaviorBehaviour model;
     private final long patienceNanos;
     private final BindingThread thread;
+    private final RobotInput.Handler handler = new InputHandler();
+    /** Event types delivered that {@link #INPUTS} does not know (none: see {@link #notify}), each logged once. */
+    private final Set<Class<?>> dropped = ConcurrentHashMap.newKeySet();
 
     // binding thread only
     private final Map<String, Long> blockedSince = new HashMap<>();
@@ -127,43 +149,89 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Override
     public void notify(BrainIoTEvent event) {
+        Class<?> type = event.getClass();
+        RobotInput input = inputOf(event);
+        if (input == null) {
+            // cannot happen: the bus delivers only the consumed types (and their subtypes), the table's keys
+            if (dropped.add(type)) {
+                LOG.log(System.Logger.Level.WARNING, "robot binding: {0} is not a consumed event type: dropped",
+                        type.getName());
+            }
+            return;
+        }
         thread.execute(() -> {
             try {
-                take(event);
+                input.handle(handler);
             } catch (RuntimeException e) {
-                LOG.log(System.Logger.Level.WARNING, "robot binding: " + event.getClass().getSimpleName()
-                        + " not handled", e);
+                LOG.log(System.Logger.Level.WARNING, "robot binding: " + type.getSimpleName() + " not handled", e);
             }
         });
     }
 
-    private void take(BrainIoTEvent event) {
-        if (event instanceof CommandOutcome o) {
-            fleet.outcome(o);
-        } else if (event instanceof MissionFinished m) {
-            fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
-            evaluate(m.robotId);
-        } else if (event instanceof MissionFailed m) {
-            if ("cancelled".equals(m.reason)) {
-                fleet.missionEnded(m.robotId, m.missionType, m.goalX, m.goalY);
-            } else {
-                fleet.missionFailed(m.robotId, m.missionType, m.goalX, m.goalY, m.reason);
+    /**
+     * @return the input the event becomes, by its class or the nearest superclass in {@link #INPUTS} (the bus
+     *         delivers the consumed types' subtypes too); null for an event of a type the table does not know
+     */
+    static RobotInput inputOf(BrainIoTEvent event) {
+        for (Class<?> c = event.getClass(); c != null; c = c.getSuperclass()) {
+            Function<BrainIoTEvent, RobotInput> make = INPUTS.get(c);
+            if (make != null) {
+                return make.apply(event);
             }
-            evaluate(m.robotId);
-        } else if (event instanceof RobotPositionChanged p) {
-            moved.add(p.robotId);
-            evaluate(p.robotId);
-        } else if (event instanceof ObstacleDetected o) {
-            evaluate(o.robotId);
-        } else if (event instanceof ObstacleCleared o) {
-            blockedSince.remove(o.robotId);
-            evaluate(o.robotId);
-        } else if (event instanceof DeviceUnreachable u) {
-            LOG.log(System.Logger.Level.WARNING, "{0} is unreachable ({1}): its errand waits", u.deviceId, u.reason);
-        } else if (event instanceof DeviceRecovered r && "robot".equals(r.deviceKind)) {
-            LOG.log(System.Logger.Level.INFO, "{0} answers again after {1} ms: it goes on with its errand",
-                    r.deviceId, r.downMillis);
-            evaluate(r.deviceId);
+        }
+        return null;
+    }
+
+    /** An entry of {@link #INPUTS}: events of {@code type} become {@code make}'s input. */
+    private static <E extends BrainIoTEvent> Map.Entry<Class<? extends BrainIoTEvent>,
+            Function<BrainIoTEvent, RobotInput>> input(Class<E> type, Function<E, RobotInput> make) {
+        return Map.entry(type, event -> make.apply(type.cast(event)));
+    }
+
+    /** The binding thread's treatment of each kind of input. */
+    private final class InputHandler implements RobotInput.Handler {
+
+        @Override
+        public void outcome(RobotInput.Outcome o) {
+            fleet.outcome(o.outcome());
+        }
+
+        @Override
+        public void missionEnded(RobotInput.MissionEnded m) {
+            if (!m.failed() || "cancelled".equals(m.reason())) {
+                fleet.missionEnded(m.robot(), m.type(), m.goalX(), m.goalY());
+            } else {
+                fleet.missionFailed(m.robot(), m.type(), m.goalX(), m.goalY(), m.reason());
+            }
+            evaluate(m.robot());
+        }
+
+        @Override
+        public void moved(RobotInput.Moved p) {
+            moved.add(p.robot());
+            evaluate(p.robot());
+        }
+
+        @Override
+        public void obstacle(RobotInput.Obstacle o) {
+            if (o.cleared()) {
+                blockedSince.remove(o.robot());
+            }
+            evaluate(o.robot());
+        }
+
+        @Override
+        public void unreachable(RobotInput.Unreachable u) {
+            LOG.log(System.Logger.Level.WARNING, "{0} is unreachable ({1}): its errand waits", u.device(), u.reason());
+        }
+
+        @Override
+        public void recovered(RobotInput.Recovered r) {
+            if ("robot".equals(r.kind())) {
+                LOG.log(System.Logger.Level.INFO, "{0} answers again after {1} ms: it goes on with its errand",
+                        r.device(), r.downMillis());
+                evaluate(r.device());
+            }
         }
     }
 
