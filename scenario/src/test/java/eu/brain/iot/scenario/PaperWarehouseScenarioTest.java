@@ -8,12 +8,13 @@ import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.time.LocalDateTime;
+import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
 import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.condition.EnabledIfSystemProperty;
-import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.api.TestInfo;
 
 /**
  * The whole chain of issue 13 as a user runs it: the runner starts robot-sim with the paper's warehouse and a bare
@@ -22,25 +23,21 @@ import org.junit.jupiter.api.io.TempDir;
  * docked. The verdict is the runner's, on robot-sim's ground truth (REQ-1, REQ-2). With the faults of issue 13: a
  * robot offline mid-errand, and a behaviour bundle stopped mid-scenario (disabled: see its reason).
  *
- * <p>Speed 5 (not the command's 10): each run takes 15-30 s of wall time on 2 cores, and the behaviours' wall-time
- * margins (a poll every 100 ms, patience 1 s) stay wide enough on a loaded CI machine for REQ-2's 10 s limit. The
- * seed differs from the command's default (1), which acceptance runs.
+ * <p>Speed 5 (not the command's 10): REQ-2's 10 s limit is then 2 s of wall time, which leaves room on a loaded CI
+ * machine for the behaviours' reactions (a poll every 100 ms of wall time). Each run took 7-12 s of wall time after
+ * the node's 2-5 s start, on 2 cores at load 1-7 (about 35 s for the class). The seed differs from the command's
+ * default (1), which acceptance runs.
  *
- * <p>Not in CI yet (run it with {@code -Dscenario.chain=true}): on a loaded 2-core machine the bare-node run failed
- * 1 time in 3, when two robots sent aside two cells apart waited for each other for ever (scenario/README.md, "Known
- * limits"): a defect of the robot behaviour, not of this test. CI runs the same chain in Felix through
- * itests' PaperWarehouseIntegrationTest; this class adds the runner, the bare node and the BMS. Enable it here when the
- * defect is fixed.
+ * <p>Each run's folder (node configuration, node.log, report.json) is kept under
+ * {@code scenario/target/chain-runs/<test>-<time>}, so that a failed run in CI can be read afterwards.
  */
-@EnabledIfSystemProperty(named = "scenario.chain", matches = "true",
-        disabledReason = "the whole chain through the runner: -Dscenario.chain=true (not in CI until the robots that "
-                + "step aside stop waiting for each other, scenario/README.md \"Known limits\")")
 class PaperWarehouseScenarioTest {
     private static final Path ROOT = Path.of("..").toAbsolutePath().normalize();
     private static final String[] BEHAVIOURS = {"robot", "door", "orchestrator"};
 
     @Test
-    void aBareNodeInstallsTheBehavioursOnDemandAndThePapersWarehouseCompletes(@TempDir Path run) throws Exception {
+    void aBareNodeInstallsTheBehavioursOnDemandAndThePapersWarehouseCompletes(TestInfo test) throws Exception {
+        Path run = runDir(test);
         String text = runScenario(run);
 
         assertThat(text).contains("PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
@@ -62,7 +59,8 @@ class PaperWarehouseScenarioTest {
     }
 
     @Test
-    void aRobotOfflineMidErrandIsNoticedAndFinishesItsErrandAfterItRecovers(@TempDir Path run) throws Exception {
+    void aRobotOfflineMidErrandIsNoticedAndFinishesItsErrandAfterItRecovers(TestInfo test) throws Exception {
+        Path run = runDir(test);
         // 6 s, under REQ-2's 10 s: an offline robot stands still where it is, possibly in the only way through the
         // door, so a longer fault makes the others wait longer than the limit behind it, by the fault's own length
         // (seen with 20 s: waits of 24 and 27 s, and a deadlock counted), which is not what this test is about
@@ -74,31 +72,47 @@ class PaperWarehouseScenarioTest {
         String log = Files.readString(run.resolve("node.log"));
         assertThat(log).as("the behaviours noticed").contains("robot2 is unreachable");
         assertThat(log).containsPattern("robot2 answers again after [\\d,.]+ ms: it goes on with its errand");
-        // robot2 was on an errand when it went offline: it got commands after it answered again
+        // robot2 was on an errand when it went offline: it got commands after it answered again (the robot
+        // behaviour's own lines, e.g. "robot2 moves to 1", "robot2 lifts a cart")
         int back = log.indexOf("robot2 answers again");
-        assertThat(log.substring(back)).containsPattern("robot 2 (moves to|lifts|places)");
+        assertThat(log.substring(back)).containsPattern("robot2 (moves to|lifts|places)");
         JsonNode report = report(run);
         assertThat(report.path("faults")).hasSize(2);
     }
 
     @Test
-    @Disabled("the BMS restarts the stopped robot bundle (node.log: 'restarted', 'Started again'), but the restarted "
-            + "robot behaviour starts with empty errands and every robot in START: a robot carrying a cart gets no "
-            + "errand and the warehouse stands still (seen at 30 s and 40 s, seed 3 and 4). Enable once the robot "
-            + "behaviour rebuilds its errands from the device model (scenario/README.md, Known limits)")
-    void aBehaviourStoppedMidScenarioIsBroughtBackByTheBmsAndTheWarehouseCompletes(@TempDir Path run)
+    @Disabled("the BMS brings the robot bundle back and the new instance takes every robot over, but 5 runs in "
+            + "18 (robot@20s: 4 of 9, robot@30s: 1 of 6; seed 3, speed 5) never ended: a robot left outside docking "
+            + "after the carts were stored, sent to the corridor (7,3) by the orchestrator as 'parked in the way' and "
+            + "never sent home, or taken over while placing its cart and left in storage (scenario/README.md, Known "
+            + "limits). Enable once the robot behaviour sends such robots home")
+    void aBehaviourStoppedMidScenarioIsBroughtBackByTheBmsAndTheWarehouseCompletes(TestInfo test)
             throws Exception {
-        // at 30 s the robots carry carts to storage: their moves are RobotPositionChanged events that nothing takes
-        // once the robot bundle is stopped, so the BMS brings it back. Stopped while every robot stands still (at
-        // 15 s they can all queue at the closed door, which only the robot behaviour has opened), no event comes
-        // and nothing brings it back: a known limit (scenario/README.md).
-        String text = runScenario(run, "--stop-behaviour", "robot@30s");
+        Path run = runDir(test);
+        // at 20 s of warehouse time the robots are out on their errands (going for their carts or carrying them to
+        // storage, depending on the machine's load), so the restarted behaviour must take them over from the edge's
+        // device model: it starts with no errand of its own. The BMS brings the bundle back whether or not an event
+        // of its types comes meanwhile.
+        String text = runScenario(run, "--stop-behaviour", "robot@20s");
 
-        assertThat(text).containsPattern("\\] fault: .*eu\\.brain\\.iot\\.behaviours\\.robot")
+        assertThat(text).containsPattern("\\] fault: stopped eu\\.brain\\.iot\\.behaviours\\.robot .*was Active")
                 .contains("PASS  stopped behaviour eu.brain.iot.behaviours.robot brought back",
                         "PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
                         "PASS  REQ-2 every errand's destination reached, every robot back in docking: 3/3 robots docked");
+        String log = Files.readString(run.resolve("node.log"));
+        assertThat(log).as("the BMS started the robot bundle again")
+                .contains("Started again eu.brain.iot.behaviours.robot ");
+        // the new instance took robots over on their errands (RobotFleet's line); the first instance never does,
+        // since it meets every robot idle in its dock
+        assertThat(log).containsPattern("robot\\d taken over at \\(\\d+,\\d+\\): TO_(CART|STORAGE|DOCK)");
         assertInstalledOnDemand(run);
+    }
+
+    /** The run's folder, kept after the test (not a temporary folder): its node.log tells why a run failed. */
+    private static Path runDir(TestInfo test) {
+        String time = LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss"));
+        return Path.of("target", "chain-runs", test.getTestMethod().orElseThrow().getName() + "-" + time)
+                .toAbsolutePath();
     }
 
     /** Runs the scenario to its end and asserts that it passed; returns what it printed. */

@@ -53,8 +53,7 @@ class CorridorIntegrationTest {
 
     @Test
     void theOrchestratorResolvesAHeadOnMeeting() throws Exception {
-        try (Warehouse w = new Warehouse(context, cm, corridor())) {
-            w.awaitEdge(model, 2, 2);
+        try (Warehouse w = new Warehouse(context, cm, model, corridor())) {
             JsonNode world = w.until("both carts in storage", 60, Warehouse::cartsInStorage);
             assertThat(world.get("counters").get("deadlocks").asLong()).as(Warehouse.describe(world)).isZero();
             assertThat(world.get("counters").get("nearMisses").asLong()).as("they did meet").isPositive();
@@ -66,9 +65,8 @@ class CorridorIntegrationTest {
     @Test
     void withoutTheOrchestratorTheyStayDeadlocked() throws Exception {
         Bundle orchestrator = orchestrator();
-        try (Warehouse w = new Warehouse(context, cm, corridor())) {
+        try (Warehouse w = new Warehouse(context, cm, model, corridor())) {
             orchestrator.stop();
-            w.awaitEdge(model, 2, 2);
             JsonNode world = w.until("a deadlock counted", 60,
                     x -> x.get("counters").get("deadlocks").asLong() > 0);
             assertThat(Warehouse.cartsInStorage(world)).as(Warehouse.describe(world)).isFalse();

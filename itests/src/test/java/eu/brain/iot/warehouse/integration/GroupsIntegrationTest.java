@@ -32,8 +32,8 @@ class GroupsIntegrationTest {
 
     @Test
     void twoGroupsOfRobotsCompleteTheWarehouse() throws Exception {
-        try (Warehouse w = new Warehouse(context, cm, Warehouse.config(MapGenerator.generate(24, 14, 6, 6, 1, 7)))) {
-            w.awaitEdge(model, 6, 6);
+        try (Warehouse w = new Warehouse(context, cm, model,
+                Warehouse.config(MapGenerator.generate(24, 14, 6, 6, 1, 7)))) {
             JsonNode world = w.until("every cart in storage, every robot docked", 120,
                     x -> Warehouse.cartsInStorage(x) && Warehouse.robotsDocked(x));
             assertThat(world.get("counters").get("deadlocks").asLong()).as(Warehouse.describe(world)).isZero();

@@ -37,8 +37,7 @@ class PaperWarehouseIntegrationTest {
 
     @Test
     void everyCartReachesStorageAndEveryRobotItsDock() throws Exception {
-        try (Warehouse w = new Warehouse(context, cm, Warehouse.config(WarehouseMap.paper()))) {
-            w.awaitEdge(model, 3, 3);
+        try (Warehouse w = new Warehouse(context, cm, model, Warehouse.config(WarehouseMap.paper()))) {
             JsonNode world = w.until("every cart in storage, every robot docked", 90,
                     x -> Warehouse.cartsInStorage(x) && Warehouse.robotsDocked(x));
             assertThat(world.get("counters").get("deadlocks").asLong()).as(Warehouse.describe(world)).isZero();
@@ -58,8 +57,7 @@ class PaperWarehouseIntegrationTest {
      */
     @Test
     void aRobotOfflineMidErrandFinishesItAfterItRecovers() throws Exception {
-        try (Warehouse w = new Warehouse(context, cm, Warehouse.config(WarehouseMap.paper()))) {
-            w.awaitEdge(model, 3, 3);
+        try (Warehouse w = new Warehouse(context, cm, model, Warehouse.config(WarehouseMap.paper()))) {
             JsonNode carrying = w.until("a robot carries a cart", 60, x -> carrier(x) != null);
             String robot = carrier(carrying);
             int index = Integer.parseInt(robot.substring("robot".length())) - 1;

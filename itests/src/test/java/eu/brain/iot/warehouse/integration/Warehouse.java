@@ -1,5 +1,6 @@
 package eu.brain.iot.warehouse.integration;
 
+import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
 import java.io.IOException;
@@ -8,6 +9,7 @@ import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
 import java.net.http.HttpResponse;
 import java.time.Duration;
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.Hashtable;
 import java.util.List;
@@ -16,7 +18,7 @@ import java.util.concurrent.CopyOnWriteArrayList;
 
 import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
-import org.osgi.framework.BundleException;
+import org.osgi.framework.ServiceReference;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.cm.Configuration;
 import org.osgi.service.cm.ConfigurationAdmin;
@@ -26,6 +28,10 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.PollMonitor;
+import eu.brain.iot.edge.model.api.ProviderSnapshot;
+import eu.brain.iot.edge.model.api.ResourceStatus;
+import eu.brain.iot.edge.model.api.ResourceValue;
 import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.SmartBehaviour;
@@ -36,8 +42,9 @@ import eu.brain.iot.robotsim.SimConfig;
  * One warehouse run for a test: robot-sim embedded (its Java API) at a speed factor, the edge configured to poll
  * it over real HTTP at the matching period, the behaviours' timing configured for the same speed (Config Admin:
  * PIDs eu.brain.iot.behaviours.robot and eu.brain.iot.behaviours.door), every command outcome on the bus recorded,
- * and the ground truth read from robot-sim's {@code GET /world}. Closed after the test: configurations deleted,
- * simulator stopped.
+ * and the ground truth read from robot-sim's {@code GET /world}. Constructed, it has the behaviours stopped, the
+ * edge moved to this simulator and its device model filled from it, then the behaviours started afresh; closed after
+ * the test: configurations deleted, the edge gone from the simulator, the simulator stopped.
  */
 final class Warehouse implements AutoCloseable {
 
@@ -71,33 +78,66 @@ final class Warehouse implements AutoCloseable {
     static final List<String> BEHAVIOURS = List.of("eu.brain.iot.behaviours.orchestrator",
             "eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot");
 
+    /** How long the edge may take to move to a new fleet, or away from one (Config Admin applies a change later). */
+    private static final Duration EDGE_DEADLINE = Duration.ofSeconds(20);
+
     final RobotSim sim;
     final double speed;
     final List<CommandOutcome> outcomes = new CopyOnWriteArrayList<>();
     private final List<Configuration> configurations = new ArrayList<>();
-    private final ServiceRegistration<?> recorder;
     private final HttpClient http = HttpClient.newHttpClient();
     private final ObjectMapper json = new ObjectMapper();
     private final BundleContext context;
+    private final DeviceModel model;
+    private final String fleetUrl;
+    private ServiceRegistration<?> recorder;
 
-    Warehouse(BundleContext context, ConfigurationAdmin cm, SimConfig config) throws IOException {
+    /**
+     * Starts the simulator and returns once the behaviours run on it. In this order: the behaviours stop (those of
+     * the previous warehouse must not act on this one's robots, nor see its first polls with their old state); the
+     * edge is pointed at this simulator; it polls it and its device model holds this fleet's robots, doors, carts
+     * and map (not the previous simulator's: see {@link #awaitEdge}); the behaviours start, and their first look at
+     * the device model is this warehouse as it stands.
+     */
+    Warehouse(BundleContext context, ConfigurationAdmin cm, DeviceModel model, SimConfig config) throws Exception {
         this.context = context;
+        this.model = model;
         this.sim = RobotSim.start(config);
         this.speed = config.speed();
-        Hashtable<String, Object> props = new Hashtable<>();
-        props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { CommandOutcome.class.getName() });
-        recorder = context.registerService(SmartBehaviour.class.getName(),
-                (SmartBehaviour<BrainIoTEvent>) e -> outcomes.add((CommandOutcome) e), props);
-        long poll = Math.max(5, Math.round(500 / speed));
-        configure(cm, ROBOT_PID, Map.of("speed", speed));
-        configure(cm, DOOR_PID, Map.of("speed", speed));
-        configure(cm, EDGE_PID, Map.of("fleet.url", sim.baseUri().toString(), "poll.period.ms", poll,
-                "world.period.ms", 4 * poll, "backoff.max.ms", 40 * poll));
-        restartBehaviours(context);
+        this.fleetUrl = sim.baseUri().toString();
+        try {
+            List<Bundle> behaviours = behaviourBundles(context);
+            for (Bundle b : behaviours) {
+                b.stop();
+            }
+            long poll = Math.max(5, Math.round(500 / speed));
+            configure(cm, ROBOT_PID, Map.of("speed", speed));
+            configure(cm, DOOR_PID, Map.of("speed", speed));
+            Instant configuredAt = Instant.now();
+            configure(cm, EDGE_PID, Map.of("fleet.url", fleetUrl, "poll.period.ms", poll,
+                    "world.period.ms", 4 * poll, "backoff.max.ms", 40 * poll));
+            awaitEdge(configuredAt);
+            // the outcomes of this warehouse's commands only, from the behaviours started next
+            Hashtable<String, Object> props = new Hashtable<>();
+            props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { CommandOutcome.class.getName() });
+            recorder = context.registerService(SmartBehaviour.class.getName(),
+                    (SmartBehaviour<BrainIoTEvent>) e -> outcomes.add((CommandOutcome) e), props);
+            // started in the order of BEHAVIOURS, each afresh (its models' places and data), as on a new node
+            for (Bundle b : behaviours) {
+                b.start();
+            }
+        } catch (Exception | Error e) {
+            try {
+                close();
+            } catch (Exception | Error c) {
+                e.addSuppressed(c);
+            }
+            throw e;
+        }
     }
 
-    /** The behaviours start afresh for each warehouse (their models' places and data), as on a new node. */
-    private static void restartBehaviours(BundleContext context) {
+    /** The behaviour bundles installed, in the order of {@link #BEHAVIOURS}. */
+    private static List<Bundle> behaviourBundles(BundleContext context) {
         List<Bundle> behaviours = new ArrayList<>();
         for (String name : BEHAVIOURS) {
             for (Bundle b : context.getBundles()) {
@@ -106,16 +146,7 @@ final class Warehouse implements AutoCloseable {
                 }
             }
         }
-        try {
-            for (Bundle b : behaviours) {
-                b.stop();
-            }
-            for (Bundle b : behaviours) {
-                b.start();
-            }
-        } catch (BundleException e) {
-            throw new IllegalStateException("cannot restart the behaviours: " + e.getMessage(), e);
-        }
+        return behaviours;
     }
 
     private void configure(ConfigurationAdmin cm, String pid, Map<String, Object> values) throws IOException {
@@ -124,12 +155,63 @@ final class Warehouse implements AutoCloseable {
         configurations.add(c);
     }
 
-    /** Waits until the edge knows the fleet's robots, doors, carts and map. */
-    void awaitEdge(DeviceModel model, int robots, int carts) {
-        await("the edge polls the fleet at " + sim.baseUri()).atMost(Duration.ofSeconds(20)).until(() ->
-                model.providers().stream().filter(p -> p.kind().equals("robot")).count() == robots
-                        && model.providers().stream().filter(p -> p.kind().equals("cart")).count() == carts
-                        && model.provider("warehouse").isPresent());
+    /**
+     * Waits until the edge polls this simulator and its device model holds this fleet as it stands (the behaviours
+     * are stopped: nothing moves): the edge's {@code fleetUrl} is this simulator's; its robots and doors are exactly
+     * this fleet's, each {@code OK} from a poll answered since it was configured, each robot where robot-sim has it;
+     * its carts are exactly this world's, where robot-sim has them; its map is this world's. Counting providers is
+     * not enough: the edge keeps devices under their ids across a change of fleet, and the carts and map of the
+     * previous simulator stay until it reads this one's world, so a model of the previous warehouse, its carts in
+     * storage, has the same counts.
+     */
+    private void awaitEdge(Instant configuredAt) throws IOException, InterruptedException {
+        JsonNode world = world();
+        List<String> devices = new ArrayList<>(sim.robotIds());
+        devices.addAll(sim.doorIds());
+        await("the edge polls the fleet at " + fleetUrl + " and its model holds that fleet").atMost(EDGE_DEADLINE)
+                .pollInterval(Duration.ofMillis(50)).untilAsserted(() -> {
+                    assertThat(edgeFleetUrl()).as("the edge's fleet").isEqualTo(fleetUrl);
+                    List<ProviderSnapshot> providers = model.providers();
+                    assertThat(providers).filteredOn(p -> p.kind().equals("robot") || p.kind().equals("door"))
+                            .allSatisfy(p -> {
+                                assertThat(p.status()).as(p.id() + ": " + p.reason()).isEqualTo(ResourceStatus.OK);
+                                assertThat(p.lastPoll()).as(p.id() + "'s last poll").isAfter(configuredAt);
+                            }).extracting(ProviderSnapshot::id).containsExactlyInAnyOrderElementsOf(devices);
+                    for (JsonNode r : world.get("robots")) {
+                        assertThat(cell(r.get("id").asText())).as(r.get("id").asText())
+                                .isEqualTo(r.get("x").asInt() + "," + r.get("y").asInt());
+                    }
+                    List<String> carts = new ArrayList<>();
+                    world.get("carts").forEach(c -> carts.add(c.get("id").asText() + "@" + c.get("x").asInt() + ","
+                            + c.get("y").asInt()));
+                    assertThat(providers).filteredOn(p -> p.kind().equals("cart"))
+                            .extracting(p -> p.id() + "@" + cell(p.id())).containsExactlyInAnyOrderElementsOf(carts);
+                    List<String> rows = new ArrayList<>();
+                    world.get("map").forEach(row -> rows.add(row.asText()));
+                    assertThat(model.resource("warehouse", "map", "rows").map(ResourceValue::value))
+                            .as("the map").contains(String.join("\n", rows));
+                });
+    }
+
+    /** @return {@code x,y} of a provider's position in the device model, or {@code null} */
+    private String cell(String provider) {
+        Object x = model.resource(provider, "position", "x").map(ResourceValue::value).orElse(null);
+        Object y = model.resource(provider, "position", "y").map(ResourceValue::value).orElse(null);
+        return x == null || y == null ? null : ((Number) x).intValue() + "," + ((Number) y).intValue();
+    }
+
+    /** @return the fleet URL the edge polls now (its {@link PollMonitor}), {@code null} without an edge */
+    private String edgeFleetUrl() {
+        ServiceReference<PollMonitor> ref = context.getServiceReference(PollMonitor.class);
+        if (ref == null) {
+            return null;
+        }
+        try {
+            PollMonitor monitor = context.getService(ref);
+            return monitor == null ? null : monitor.statistics().fleetUrl;
+        } finally {
+            context.ungetService(ref);
+        }
     }
 
     /**
@@ -223,13 +305,24 @@ final class Warehouse implements AutoCloseable {
         return s.append("counters ").append(world.get("counters")).toString();
     }
 
+    /**
+     * Deletes the configurations, waits until the edge has left this simulator, then stops it. Config Admin applies
+     * the deletion later: a simulator stopped at once would be polled closed meanwhile, its devices made
+     * {@code STALE} or {@code UNREACHABLE} in a model the next warehouse starts from.
+     */
     @Override
     public void close() throws Exception {
         try {
-            recorder.unregister();
+            if (recorder != null) {
+                recorder.unregister();
+                recorder = null;
+            }
             for (Configuration c : configurations) {
                 c.delete();
             }
+            configurations.clear();
+            await("the edge leaves the fleet at " + fleetUrl).atMost(EDGE_DEADLINE)
+                    .until(() -> !fleetUrl.equals(edgeFleetUrl()));
         } finally {
             sim.close();
         }
