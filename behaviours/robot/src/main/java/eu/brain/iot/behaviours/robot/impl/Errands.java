@@ -91,6 +91,11 @@ final class Errands {
         String robot = s.id();
         if (!adopted.add(robot)) {
             seen(robot, s.cell(), grid.area(s.cell()) == Grid.DOCKING);
+            if (!errands.containsKey(robot) && s.idle() && grid.area(s.cell()) != Grid.DOCKING
+                    && docks.containsKey(robot)) {
+                // idle out on the floor without an errand: the orchestrator sent it out of another robot's way
+                errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, docks.get(robot)));
+            }
             return false;
         }
         if (grid.area(s.cell()) == Grid.DOCKING) {
@@ -301,6 +306,27 @@ final class Errands {
             default -> {
                 return false;
             }
+        }
+    }
+
+    /**
+     * The robot's cart is on the floor although its errand says it carries it (put down just before this
+     * behaviour took the robot over, or its pick failed): in storage it counts as placed and the robot heads home;
+     * elsewhere the cart goes back to the table.
+     */
+    synchronized void cartDown(String robot, Cell at, Grid grid) {
+        Errand e = errands.get(robot);
+        if (e == null || e.leg() != Leg.TO_STORAGE) {
+            return;
+        }
+        if (grid.area(at) == Grid.STORAGE) {
+            if (e.drop() != null && !e.drop().equals(at)) {
+                drops.remove(e.drop());
+            }
+            drops.add(at);
+            placed(robot);
+        } else {
+            release(robot);
         }
     }
 

@@ -295,10 +295,14 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
-                if (e.leg() == Errands.Leg.TO_STORAGE && s.carrying() && !Boolean.TRUE.equals(data.get("carrying"))) {
-                    // taken over carrying a cart (the behaviour started again): the model goes through CART,
-                    // where liftCart finds the cart lifted already, to carry it on (Errands#adopt)
+                if ((e.leg() == Errands.Leg.TO_STORAGE || e.leg() == Errands.Leg.TO_CART) && s.carrying()
+                        && !Boolean.TRUE.equals(data.get("carrying"))) {
+                    // taken over carrying a cart, or lifting it (the behaviour started again): the model goes through
+                    // CART, where liftCart finds the cart lifted already, to carry it on (Errands#adopt)
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
+                } else if (e.leg() == Errands.Leg.TO_STORAGE && RobotFleet.cartPutDown(s)) {
+                    // its cart is on the floor: put down just before a take-over, or its pick failed
+                    fleet.resume(robot, "carrying nothing");
                 } else if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle()
                         && !s.carrying()) {
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
@@ -330,8 +334,18 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                     fleet.resume(robot, "idle before its dock");
                 }
             }
+            case "DOCKING" -> {
+                // a robot done with its carts (the model stays in DOCKING) that was sent out of the way goes home
+                if (e.leg() == Errands.Leg.TO_DOCK && s.idle()) {
+                    if (s.cell().equals(e.dock())) {
+                        fleet.docked(robot);
+                    } else {
+                        fleet.resume(robot, "back to its dock");
+                    }
+                }
+            }
             default -> {
-                // OBSTACLE, DOOR, CART, ROBOT, DOCKING: the model's own transitions, the door or the orchestrator
+                // OBSTACLE, DOOR, CART, ROBOT: the model's own transitions, the door or the orchestrator
             }
         }
     }

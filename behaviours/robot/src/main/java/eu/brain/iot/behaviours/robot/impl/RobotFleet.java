@@ -113,6 +113,16 @@ public final class RobotFleet {
     }
 
     /**
+     * Whether the robot's last mission left its cart on the floor: a place that finished, or a pick that failed.
+     * (Right after a pick is sent the robot still shows idle and empty, its last mission the go-to to the cart: that
+     * is not it.)
+     */
+    static boolean cartPutDown(RobotState s) {
+        return s.idle() && !s.carrying() && ("place".equals(s.missionType()) && "finished".equals(s.missionState())
+                || "pick".equals(s.missionType()) && "failed".equals(s.missionState()));
+    }
+
+    /**
      * The robot model's {@code getPosition}: its area code when it stands in docking, unload or storage; out on
      * the floor elsewhere (the corridor, a doorway) it counts as unload, so a robot the model first meets away
      * from its dock starts {@code returning} (Robot.bip's initial transition).
@@ -151,6 +161,13 @@ public final class RobotFleet {
         }
         adopt(s);
         Errands.Errand e = errands.of(robot);
+        if (e.leg() == Errands.Leg.TO_STORAGE && cartPutDown(s)) {
+            errands.cartDown(robot, s.cell(), grid.get());
+            LOG.log(System.Logger.Level.INFO, "{0} carries no cart at {1}: {2}", robot, s.cell(),
+                    grid.get().area(s.cell()) == Grid.STORAGE ? "it was put down in storage, it goes home"
+                            : "it goes back to the table");
+            e = errands.of(robot);
+        }
         if (e.leg() == Errands.Leg.NONE) {
             e = errands.claim(robot, s.cell(), view.carts(), grid.get()).orElse(e);
             if (e.leg() == Errands.Leg.TO_CART) {
