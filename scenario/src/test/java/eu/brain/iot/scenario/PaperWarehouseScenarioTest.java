@@ -12,7 +12,6 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
-import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInfo;
 
@@ -81,11 +80,6 @@ class PaperWarehouseScenarioTest {
     }
 
     @Test
-    @Disabled("the BMS brings the robot bundle back and the new instance takes every robot over, but 5 runs in "
-            + "18 (robot@20s: 4 of 9, robot@30s: 1 of 6; seed 3, speed 5) never ended: a robot left outside docking "
-            + "after the carts were stored, sent to the corridor (7,3) by the orchestrator as 'parked in the way' and "
-            + "never sent home, or taken over while placing its cart and left in storage (scenario/README.md, Known "
-            + "limits). Enable once the robot behaviour sends such robots home")
     void aBehaviourStoppedMidScenarioIsBroughtBackByTheBmsAndTheWarehouseCompletes(TestInfo test)
             throws Exception {
         Path run = runDir(test);
