@@ -125,18 +125,32 @@ class PaperWarehouseScenarioTest {
         return text;
     }
 
-    /** The node started bare: the BMS installed each behaviour after the node was up, for an event it saw. */
+    /**
+     * The node started bare: the BMS installed each behaviour after the node was up, for an event it saw. The robot
+     * and door behaviours' triggers come in every run (the first poll of each robot and door); the orchestrator's
+     * comes with the first robot-in-front report, which a run without a meeting never makes (seen in CI: every cart
+     * stored, no robot stopped behind another for the patience): then the orchestrator must not be installed.
+     */
     private static void assertInstalledOnDemand(Path run) throws Exception {
         String log = Files.readString(run.resolve("node.log"));
         int ready = log.indexOf("fabric node ready in ");
         assertThat(ready).as("the node's ready line").isNotNegative();
+        int firstReport = log.indexOf("has been stopped behind a robot for ");
         for (String b : BEHAVIOURS) {
             String line = "Installed eu.brain.iot.behaviours." + b + " ";
+            if (b.equals("orchestrator") && firstReport < 0) {
+                assertThat(log).as("no robot-in-front report, no orchestrator").doesNotContain(line);
+                continue;
+            }
             assertThat(log.indexOf(line)).as("the BMS installed " + b + " on demand, after the node was up")
                     .isGreaterThan(ready);
         }
         assertThat(log).contains("for events of [eu.brain.iot.edge.api.RobotPositionChanged]",
-                "for events of [eu.brain.iot.behaviours.events.ConnectorResolveCollisionOffer]");
+                "for events of [eu.brain.iot.edge.api.DoorStateChanged]");
+        if (firstReport >= 0) {
+            assertThat(log.indexOf("for events of [eu.brain.iot.behaviours.events.ConnectorResolveCollisionOffer]"))
+                    .as("the orchestrator installed for the first robot-in-front report").isGreaterThan(firstReport);
+        }
     }
 
     private static JsonNode report(Path run) throws Exception {
