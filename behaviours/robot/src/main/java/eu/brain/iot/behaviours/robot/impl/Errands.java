@@ -90,12 +90,7 @@ final class Errands {
     synchronized boolean adopt(RobotState s, List<CartState> carts, Grid grid, List<RobotState> robots) {
         String robot = s.id();
         if (!adopted.add(robot)) {
-            seen(robot, s.cell(), grid.area(s.cell()) == Grid.DOCKING);
-            if (!errands.containsKey(robot) && s.idle() && grid.area(s.cell()) != Grid.DOCKING
-                    && docks.containsKey(robot)) {
-                // idle out on the floor without an errand: the orchestrator sent it out of another robot's way
-                errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, docks.get(robot)));
-            }
+            seen(s, grid);
             return false;
         }
         if (grid.area(s.cell()) == Grid.DOCKING) {
@@ -132,6 +127,25 @@ final class Errands {
             errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, dock));
         }
         return true;
+    }
+
+    /** @return whether {@link #adopt} has taken the robot over already */
+    synchronized boolean knows(String robot) {
+        return adopted.contains(robot);
+    }
+
+    /**
+     * A robot taken over already, seen again: its dock is learnt as before ({@link #seen(String, Cell, boolean)}),
+     * and one standing idle out on the floor without an errand (the orchestrator sent it out of another robot's way)
+     * goes home.
+     */
+    synchronized void seen(RobotState s, Grid grid) {
+        String robot = s.id();
+        boolean docking = grid.area(s.cell()) == Grid.DOCKING;
+        seen(robot, s.cell(), docking);
+        if (!errands.containsKey(robot) && s.idle() && !docking && docks.containsKey(robot)) {
+            errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, docks.get(robot)));
+        }
     }
 
     synchronized Errand of(String robot) {
@@ -314,7 +328,7 @@ final class Errands {
      * behaviour took the robot over, or its pick failed): in storage it counts as placed and the robot heads home;
      * elsewhere the cart goes back to the table.
      */
-    synchronized void cartDown(String robot, Cell at, Grid grid) {
+    synchronized void cartDown(String robot, Cell at, Grid grid) { // at: where the cart stands
         Errand e = errands.get(robot);
         if (e == null || e.leg() != Leg.TO_STORAGE) {
             return;

@@ -300,7 +300,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                     // taken over carrying a cart, or lifting it (the behaviour started again): the model goes through
                     // CART, where liftCart finds the cart lifted already, to carry it on (Errands#adopt)
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
-                } else if (e.leg() == Errands.Leg.TO_STORAGE && RobotFleet.cartPutDown(s)) {
+                } else if (e.leg() == Errands.Leg.TO_STORAGE && fleet.cartPutDown(s, e) != null) {
                     // its cart is on the floor: put down just before a take-over, or its pick failed
                     fleet.resume(robot, "carrying nothing");
                 } else if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle()

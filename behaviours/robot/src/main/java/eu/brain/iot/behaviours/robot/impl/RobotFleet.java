@@ -103,6 +103,10 @@ public final class RobotFleet {
             errands.seen(s.id(), s.cell(), s.area() == Grid.DOCKING);
             return;
         }
+        if (errands.knows(s.id())) {
+            errands.seen(s, grid.get()); // every look at every robot: no read of the other robots and carts
+            return;
+        }
         if (errands.adopt(s, view.carts(), grid.get(), view.robots())) {
             Errands.Errand e = errands.of(s.id());
             if (e.leg() != Errands.Leg.NONE) {
@@ -113,13 +117,23 @@ public final class RobotFleet {
     }
 
     /**
-     * Whether the robot's last mission left its cart on the floor: a place that finished, or a pick that failed.
-     * (Right after a pick is sent the robot still shows idle and empty, its last mission the go-to to the cart: that
-     * is not it.)
+     * Whether the cart the robot's errand says it carries is on the floor, put down by it: the robot stands idle and
+     * empty, the cart on the floor, and either the robot's last mission left it there (a place that finished, a pick
+     * that failed) or the robot has moved off the cart's cell (taken over while placing, it was sent on to a storage
+     * cell: seen in 1 stop-behaviour run of 4). Right after a pick is sent the robot stands on its cart, idle and
+     * empty, its last mission the go-to to the cart: that is not it.
+     *
+     * @return the cell of the cart on the floor, or {@code null}
      */
-    static boolean cartPutDown(RobotState s) {
-        return s.idle() && !s.carrying() && ("place".equals(s.missionType()) && "finished".equals(s.missionState())
-                || "pick".equals(s.missionType()) && "failed".equals(s.missionState()));
+    Cell cartPutDown(RobotState s, Errands.Errand e) {
+        if (!s.idle() || s.carrying() || e.cart() == null) {
+            return null;
+        }
+        Optional<Cell> down = view.carts().stream().filter(c -> c.id().equals(e.cart()) && c.carriedBy() == null)
+                .map(c -> c.cell()).findFirst();
+        boolean left = "place".equals(s.missionType()) && "finished".equals(s.missionState())
+                || "pick".equals(s.missionType()) && "failed".equals(s.missionState());
+        return down.filter(cell -> left || !cell.equals(s.cell())).orElse(null);
     }
 
     /**
@@ -161,11 +175,12 @@ public final class RobotFleet {
         }
         adopt(s);
         Errands.Errand e = errands.of(robot);
-        if (e.leg() == Errands.Leg.TO_STORAGE && cartPutDown(s)) {
-            errands.cartDown(robot, s.cell(), grid.get());
-            LOG.log(System.Logger.Level.INFO, "{0} carries no cart at {1}: {2}", robot, s.cell(),
-                    grid.get().area(s.cell()) == Grid.STORAGE ? "it was put down in storage, it goes home"
-                            : "it goes back to the table");
+        Cell down = e.leg() == Errands.Leg.TO_STORAGE ? cartPutDown(s, e) : null;
+        if (down != null) {
+            errands.cartDown(robot, down, grid.get());
+            LOG.log(System.Logger.Level.INFO, "{0} carries no cart: {1} stands at {2}, {3}", robot, e.cart(), down,
+                    grid.get().area(down) == Grid.STORAGE ? "in storage: the robot goes home"
+                            : "not in storage: it goes back to the table");
             e = errands.of(robot);
         }
         if (e.leg() == Errands.Leg.NONE) {

@@ -101,6 +101,20 @@ class ErrandsTest {
     }
 
     @Test
+    void aRobotSentOutOfTheWayWithoutAnErrandGoesHome() {
+        Errands errands = new Errands(6);
+        RobotState docked = robot("robot1", new Cell(1, 1), null, null, null);
+        errands.adopt(docked, List.of(), BAND, List.of(docked));
+        assertThat(errands.knows("robot1")).isTrue();
+
+        errands.seen(robot("robot1", new Cell(1, 2), null, "running", new Cell(1, 2)), BAND);
+        assertThat(errands.of("robot1").leg()).as("still on its way out").isEqualTo(Errands.Leg.NONE);
+        errands.seen(robot("robot1", new Cell(1, 2), null, "finished", new Cell(1, 2)), BAND);
+        assertThat(errands.of("robot1").leg()).isEqualTo(Errands.Leg.TO_DOCK);
+        assertThat(errands.of("robot1").dock()).isEqualTo(new Cell(1, 1));
+    }
+
+    @Test
     void aFailedGoToToTheStorageCellGivesAnotherCellAndAFailedOneToTheCartGivesTheCartBack() {
         Errands errands = new Errands(6);
         Cell dock = new Cell(2, 1);
