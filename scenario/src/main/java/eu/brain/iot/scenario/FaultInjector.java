@@ -56,14 +56,22 @@ final class FaultInjector {
         return done;
     }
 
-    /** Ends every fault still going on (a robot still offline comes back), so that the end state is judged fairly. */
-    void clear() {
+    /**
+     * Ends every fault still going on (a robot still offline comes back), so that the end state is judged fairly.
+     *
+     * @return the faults that never started (due after the run ended), as a person reads them
+     */
+    List<String> clear() {
+        List<String> notDone = new ArrayList<>();
         for (Pending p : pending) {
             if (!p.start()) {
                 p.fault().inject(this, false);
+            } else {
+                notDone.add(p.fault().describe());
             }
         }
         pending.clear();
+        return notDone;
     }
 
     String offline(PlannedFault.Offline off, boolean on) {
