@@ -36,7 +36,7 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
 
 /**
  * The edge's polling benchmark (BENCHMARKS.md, "Edge polling"; issue 4). Not a test: nothing is asserted, and the
- * name keeps Surefire away from it. Run it with {@code sensinact-stub/bench/poll-bench.sh}.
+ * name keeps Surefire away from it. Run it with {@code edge/bench/poll-bench.sh}.
  * <p>
  * For each fleet size it starts robot-sim as a separate process on a generated map (clock running, 0.5 s steps),
  * so that the edge's CPU is measured apart from the simulator's, then an {@link Edge} in this JVM that discovers
@@ -50,7 +50,7 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
 public final class PollBenchmark {
 
     static final String USAGE = """
-            Usage: sensinact-stub/bench/poll-bench.sh [options]      (edge polling benchmark; not a test)
+            Usage: edge/bench/poll-bench.sh [options]      (edge polling benchmark; not a test)
               --robots LIST        fleet sizes, comma separated (default 100,1000,10000)
               --warmup S           seconds polled before measuring (default 20)
               --duration S         seconds measured (default 30)

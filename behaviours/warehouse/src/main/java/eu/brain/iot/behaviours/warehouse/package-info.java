@@ -1,0 +1,13 @@
+/**
+ * The warehouse as the behaviours' extern functions see it: the grid read from the edge's {@code warehouse} provider
+ * (cells, areas, shortest paths, the search for free cells), the fleet view built from the edge's device model, the
+ * ledger of commands sent through the edge, the robot names and the thread that owns a binding's state. Hand-written,
+ * shared by the robot, door and orchestrator bundles; depends on the event bus API and the edge's event and
+ * device-model APIs.
+ */
+@Export
+@Version("1.1.0")
+package eu.brain.iot.behaviours.warehouse;
+
+import org.osgi.annotation.bundle.Export;
+import org.osgi.annotation.versioning.Version;
