@@ -7,6 +7,7 @@ import static eu.brain.iot.bis.integration.TestRepository.EDGE_MODEL_API;
 import static eu.brain.iot.bis.integration.TestRepository.EVENTS;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT;
 import static eu.brain.iot.bis.integration.TestRepository.ROBOT_UNLOAD;
+import static eu.brain.iot.bis.integration.TestRepository.WAREHOUSE;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.util.List;
@@ -39,10 +40,10 @@ class InstallIntegrationTest extends BisTestBase {
         assertThat(door.symbolicName).isEqualTo(DOOR);
         assertThat(door.state).isEqualTo("ACTIVE");
         assertThat(door.reason).isEqualTo("test: event had no consumer");
-        // the behaviour first, then what it needs: the events bundle and the edge's two API bundles it imports
+        // the behaviour first, then what it needs: the events bundle, the warehouse helpers and the edge's two API bundles
         assertThat(door.bundles.get(0).symbolicName).isEqualTo(DOOR);
         assertThat(door.bundles).extracting(b -> b.symbolicName).containsExactlyInAnyOrder(DOOR, EVENTS, EDGE_API,
-                EDGE_MODEL_API);
+                EDGE_MODEL_API, WAREHOUSE);
         assertThat(bundle(DOOR).getState()).isEqualTo(Bundle.ACTIVE);
         assertThat(bundle(EVENTS).getState()).isEqualTo(Bundle.ACTIVE);
         assertThat(busKnows(DOOR)).as("the bus lists the door's smart behaviour when the promise resolves").isTrue();
@@ -52,7 +53,7 @@ class InstallIntegrationTest extends BisTestBase {
         // a second behaviour shares the events bundle: counted, not installed twice
         InstalledBehaviour robot = value(installer.install(byType(ROBOT_UNLOAD)));
         assertThat(robot.bundles).extracting(b -> b.symbolicName).containsExactlyInAnyOrder(ROBOT, EVENTS, EDGE_API,
-                EDGE_MODEL_API);
+                EDGE_MODEL_API, WAREHOUSE);
         assertThat(bundleCount(EVENTS)).isEqualTo(1);
         assertThat(bundleCount(EDGE_API)).isEqualTo(1);
         InstalledBundle shared = installer.installed().get(0).bundles.stream()

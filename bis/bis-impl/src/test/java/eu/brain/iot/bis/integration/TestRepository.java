@@ -27,6 +27,8 @@ final class TestRepository {
     static final String ROBOT = "eu.brain.iot.behaviours.robot";
     static final String ORCHESTRATOR = "eu.brain.iot.behaviours.orchestrator";
     static final String EVENTS = "eu.brain.iot.behaviours.events";
+    /** The warehouse helpers the robot, door and orchestrator behaviours share. */
+    static final String WAREHOUSE = "eu.brain.iot.behaviours.warehouse";
     /** The edge's API bundles, which the behaviours import (they drive the fleet through the edge). */
     static final String EDGE_API = "eu.brain.iot.edge.api";
     static final String EDGE_MODEL_API = "eu.brain.iot.edge.model.api";

@@ -25,7 +25,8 @@ class IndexParserTest {
 
         assertThat(facts).extracting(BehaviourResource::symbolicName).containsExactlyInAnyOrder(
                 "eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot",
-                "eu.brain.iot.behaviours.orchestrator", "eu.brain.iot.behaviours.events", "eu.brain.iot.edge.api",
+                "eu.brain.iot.behaviours.orchestrator", "eu.brain.iot.behaviours.events",
+                "eu.brain.iot.behaviours.warehouse", "eu.brain.iot.edge.api",
                 "eu.brain.iot.edge.model.api");
         BehaviourResource door = facts.stream().filter(f -> f.symbolicName().endsWith(".door")).findFirst()
                 .orElseThrow();
@@ -45,7 +46,7 @@ class IndexParserTest {
     @Test
     void readsTheGzippedIndexAlike() throws Exception {
         Path gz = REPOSITORY.resolve("index.xml.gz");
-        assertThat(IndexParser.parse(Files.readAllBytes(gz), gz.toUri())).hasSize(6);
+        assertThat(IndexParser.parse(Files.readAllBytes(gz), gz.toUri())).hasSize(7);
     }
 
     @Test
