@@ -8,7 +8,7 @@ import eu.brain.iot.bip.check.Workspace;
 import eu.brain.iot.bip.diag.Diagnostics;
 
 /**
- * Load, check, generate Java: the entry point the command line, the Maven plugin and the benchmark share. Loading
+ * Load, check, generate Java: the entry point the command line and the Maven plugin share. Loading
  * and checking are the language's ({@link ModelSet}); this adds the generation and what it says it wrote. Not
  * thread-safe: one run owns it.
  */

@@ -186,7 +186,7 @@ public final class RequirementsCheck {
 
     /**
      * Loads the simulation of a model's extern functions: a class implementing {@link SimulationExterns} with a
-     * public no-argument constructor, found on {@code classpath} or bip-core's own class path.
+     * public no-argument constructor, found on {@code classpath} or the model checker's own class path.
      *
      * @return a supplier of one instance per sampling thread (NONE after an error, reported at {@code pos})
      */

@@ -30,7 +30,7 @@ import eu.brain.iot.bip.smc.runtime.SimulatedSystem;
 
 /**
  * Compiles generated sources in memory with the JDK's compiler (javax.tools) and loads them in a fresh class loader
- * whose parent is bip-core's, so the classes of one model never meet another's. The loader defines every class it
+ * whose parent is the model checker's, so the classes of one model never meet another's. The loader defines every class it
  * compiled itself (child first): the deployed classes of the same names (a behaviour jar on the class path of a test
  * or of the Maven goal) are never used in their place, so the code compiled from the model is the code that runs.
  */
@@ -52,7 +52,7 @@ final class RuntimeCompiler {
         return compile(files, classpath, RuntimeCompiler.class.getClassLoader());
     }
 
-    /** @param parent where every class that was not compiled here comes from (bip-core's runtime, the JDK) */
+    /** @param parent where every class that was not compiled here comes from (the model checker's runtime, the JDK) */
     static ClassLoader compile(List<JavaFile> files, List<Path> classpath, ClassLoader parent)
             throws CompileException {
         JavaCompiler javac = ToolProvider.getSystemJavaCompiler();

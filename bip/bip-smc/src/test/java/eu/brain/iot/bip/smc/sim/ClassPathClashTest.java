@@ -44,7 +44,7 @@ class ClassPathClashTest {
 
     /**
      * A class loader holding what a deployed jar of {@code model} holds: its atom classes and extern interfaces
-     * (the bridges and extern simulations are the model checker's own), over bip-core's loader.
+     * (the bridges and extern simulations are the model checker's own), over the model checker's loader.
      */
     private static ClassLoader deployedJar(SmcSession model) throws Exception {
         List<JavaFile> deployed = new SimulationWriter(model.system(), new Diagnostics(), Builtins::isBuiltin).atomFiles().stream()
