@@ -10,7 +10,7 @@ B=behaviours
 OUT=$B/system-tests/figures
 mkdir -p "$OUT"
 bip() {
-    java -jar bip/bip-core/target/bip-core-0.1.0-SNAPSHOT.jar smc $B/system-tests/src/main/bip/WarehouseEnvironment.bip \
+    java -jar bip/bip-cli/target/bip.jar smc $B/system-tests/src/main/bip/WarehouseEnvironment.bip \
         -I $B/events/src/main/bip -I $B/robot/src/main/bip -I $B/door/src/main/bip -I $B/orchestrator/src/main/bip \
         --cp $B/system-tests/target/test-classes:$B/orchestrator/target/classes "$@"
 }

@@ -13,9 +13,9 @@ import org.apache.maven.plugin.MojoExecutionException;
 import org.apache.maven.plugin.MojoFailureException;
 import org.apache.maven.plugins.annotations.Parameter;
 
-import eu.brain.iot.bip.Toolchain;
 import eu.brain.iot.bip.diag.Diagnostic;
 import eu.brain.iot.bip.diag.Diagnostics;
+import eu.brain.iot.bip.generate.Toolchain;
 
 /** What both goals share: finding the model files, loading and checking them, reporting problems. */
 abstract class AbstractBipMojo extends AbstractMojo {

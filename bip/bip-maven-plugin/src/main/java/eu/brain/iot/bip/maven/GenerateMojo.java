@@ -14,7 +14,7 @@ import org.apache.maven.plugins.annotations.Mojo;
 import org.apache.maven.plugins.annotations.Parameter;
 import org.apache.maven.project.MavenProject;
 
-import eu.brain.iot.bip.Toolchain;
+import eu.brain.iot.bip.generate.Toolchain;
 
 /**
  * {@code bip:generate}: checks the module's BIP models and writes their Java into

@@ -8,7 +8,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
-import eu.brain.iot.bip.Toolchain;
+import eu.brain.iot.bip.check.ModelSet;
 import eu.brain.iot.bip.diag.Diagnostics;
 import eu.brain.iot.bip.model.BipPackage;
 import eu.brain.iot.bip.model.ExternFunction;
@@ -29,17 +29,17 @@ class SimulationCoversModelsTest {
     @Test
     void everyExternFunctionOfTheClosedSystemIsSimulated() {
         Diagnostics diagnostics = new Diagnostics();
-        Toolchain tool = Toolchain.load(List.of(Path.of("src/main/bip/WarehouseEnvironment.bip")),
+        ModelSet models = ModelSet.load(List.of(Path.of("src/main/bip/WarehouseEnvironment.bip")),
                 List.of(BEHAVIOURS.resolve("events/src/main/bip"), BEHAVIOURS.resolve("robot/src/main/bip"),
                         BEHAVIOURS.resolve("door/src/main/bip"), BEHAVIOURS.resolve("orchestrator/src/main/bip")),
                 diagnostics);
-        assertThat(tool.check()).as("the closed system checks: %s", diagnostics.sorted()).isTrue();
+        assertThat(models.check()).as("the closed system checks: %s", diagnostics.sorted()).isTrue();
 
         WarehouseSimulation simulation = new WarehouseSimulation();
         TraceRandom random = new TraceRandom();
         random.seed(1);
         List<String> functions = new ArrayList<>();
-        for (BipPackage pkg : tool.workspace().packages()) {
+        for (BipPackage pkg : models.workspace().packages()) {
             for (ExternFunction f : pkg.externFunctions()) {
                 List<String> types = f.params().stream().map(p -> p.type().name()).toList();
                 String result = f.returnType() == null ? "no value" : f.returnType().name();
