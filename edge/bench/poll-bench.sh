@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Edge polling benchmark (BENCHMARKS.md, "Edge polling"; issue 4; not a test): for 100, 1,000 and 10,000 robots,
+# Edge polling benchmark (BENCHMARKS.md, "Edge polling"; not a test): for 100, 1,000 and 10,000 robots,
 # robot-sim runs as a separate process on this machine and the edge (eu.brain.iot.edge.impl.Edge, no framework)
 # polls every robot and door every 500 ms; prints polls/s, the share on time, CPU of both processes, load average.
 # Usage: edge/bench/poll-bench.sh [options]        (--help lists them; from any directory)

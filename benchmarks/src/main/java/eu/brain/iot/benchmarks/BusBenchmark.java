@@ -8,7 +8,7 @@ import java.util.List;
 import eu.brain.iot.benchmarks.spi.BusDriver;
 
 /**
- * The event bus benchmark (issue 2, section 6): our bus, Felix EventAdmin (default and Timeout=0) and Aries
+ * The event bus benchmark (BENCHMARKS.md, "Event bus"): our bus, Felix EventAdmin (default and Timeout=0) and Aries
  * typedevent, each in its own embedded Felix framework in a JVM of its own ({@link ForkedRun}), one after the
  * other. Run it with
  * {@code java -jar benchmarks/target/benchmarks.jar}; see the module's README.

@@ -22,7 +22,7 @@ import eu.brain.iot.benchmarks.spi.InstallDriver;
 import eu.brain.iot.benchmarks.spi.InstallProbe;
 
 /**
- * Issue 9's benchmark: how long from the first event of a type no behaviour consumes to that event inside the
+ * The install-on-demand benchmark: how long from the first event of a type no behaviour consumes to that event inside the
  * {@code notify()} of the behaviour the BMS had the BIS install (the real bus, BMS, BIS and Felix resolver in an
  * embedded Felix; the behaviour from a real R5 index on a file, then served over HTTP on loopback); the behaviour is
  * uninstalled between installs. Then a burst: 4 publishers × N/4 events published while the install runs, all

@@ -16,11 +16,11 @@ import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInfo;
 
 /**
- * The whole chain of issue 13 as a user runs it: the runner starts robot-sim with the paper's warehouse and a bare
+ * The whole chain as a user runs it: the runner starts robot-sim with the paper's warehouse and a bare
  * node (its core and the edge); the BMS installs the robot, door and orchestrator behaviours on demand from the
  * repository the build made; they drive the fleet through the edge until every cart is in storage and every robot
- * docked. The verdict is the runner's, on robot-sim's ground truth (REQ-1, REQ-2). With the faults of issue 13: a
- * robot offline mid-errand, and a behaviour bundle stopped mid-scenario (disabled: see its reason).
+ * docked. The verdict is the runner's, on robot-sim's ground truth (REQ-1, REQ-2). With faults: a
+ * robot offline mid-errand, and a behaviour bundle stopped mid-scenario.
  *
  * <p>Speed 5 (not the command's 10): REQ-2's 10 s limit is then 2 s of wall time, which leaves room on a loaded CI
  * machine for the behaviours' reactions (a poll every 100 ms of wall time). Each run took 7-12 s of wall time after

@@ -179,7 +179,7 @@ class OnDemandInstallIntegrationTest extends BmsTestBase {
     }
 
     /**
-     * Issue 13, "faults during the scenario": a behaviour bundle stopped mid-scenario (as Gogo's {@code stop <id>}
+     * A fault during the scenario: a behaviour bundle stopped mid-scenario (as Gogo's {@code stop <id>}
      * does) is started again by the BIS when the BMS holds its next events; one uninstalled behind the installer's back
      * ({@code Bundle.uninstall()}, not {@code bis:uninstall}) is installed again. Every event arrives once, in order.
      * The BMS's watch of behaviour bundles, which would bring it back without an event, waits longer than the test

@@ -22,12 +22,11 @@ import eu.brain.iot.bip.cli.Main;
  * The warehouse gate refutes on the real system, not only on toy models: REQ-2 as requirements.smc states it, but
  * with every robot-in-front detection resolved within 1 interaction instead of 300, is refuted on the deployed
  * models (a resolution takes the robot's offer, the rendezvous, the orchestrator's internal step and its broadcast,
- * and a detection happens in most runs), and `bip smc` exits 1 naming it. (Until issue 13 this test demanded REQ-2 at
- * 0.95, refuted then by the all-three rendezvous; REQ-2 now holds at 1.0000 over 6,623 traces.)
+ * and a detection happens in most runs), and `bip smc` exits 1 naming it.
  * <p>
  * Runs the command line in this JVM, whose class path holds the deployed behaviour classes (RobotBehavior, ...) that
  * the compiled engine generates again under the same names: the engine's own classes must be the ones that run
- * (bip/README, "Engines"); before that was so, the sampling threads died with IllegalAccessError and the run hung.
+ * (bip/README, "Engines"); otherwise the sampling threads die with IllegalAccessError and the run hangs.
  */
 class WarehouseGateTest {
 

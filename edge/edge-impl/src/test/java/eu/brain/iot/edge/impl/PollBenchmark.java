@@ -35,7 +35,7 @@ import com.fasterxml.jackson.databind.ObjectMapper;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 
 /**
- * The edge's polling benchmark (BENCHMARKS.md, "Edge polling"; issue 4). Not a test: nothing is asserted, and the
+ * The edge's polling benchmark (BENCHMARKS.md, "Edge polling"). Not a test: nothing is asserted, and the
  * name keeps Surefire away from it. Run it with {@code edge/bench/poll-bench.sh}.
  * <p>
  * For each fleet size it starts robot-sim as a separate process on a generated map (clock running, 0.5 s steps),

@@ -39,7 +39,7 @@ import eu.brain.iot.robotsim.SimConfig;
 import eu.brain.iot.robotsim.world.MapGenerator;
 
 /**
- * A smart behaviour blocked on the edge's events does not hold up the polling of the fleet (issue 11, part 2):
+ * A smart behaviour blocked on the edge's events does not hold up the polling of the fleet:
  * with the bus's queues made small (16 events), a behaviour that consumes every robot position and command outcome
  * blocks in its first {@code notify()} while the edge polls 1,000 robots every 500 ms. The bus refuses the edge's
  * events, which wait in the edge's outbox, while every poll goes on being sent and answered on time; commands sent
