@@ -5,46 +5,92 @@ import java.nio.file.Path;
 import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
-import java.util.HashMap;
 import java.util.List;
-import java.util.Map;
-import java.util.Set;
+import java.util.function.Function;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.MaxValuesExceededException;
+import picocli.CommandLine.MissingParameterException;
+import picocli.CommandLine.Model.OptionSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.OverwrittenOptionException;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.UnmatchedArgumentException;
 
-/** Reads the command line into {@link Options}; every mistake is a {@link UsageException} saying what to write. */
+/**
+ * Reads the command line (picocli) into {@link Options}; every mistake is a {@link UsageException} saying what to
+ * write. Values are checked after parsing, in a fixed order, so that the first mistake reported does not depend on
+ * the order of the options.
+ */
+@Command(name = "warehouse-scenario", sortOptions = false, usageHelpWidth = 120,
+        customSynopsis = "./warehouse-scenario [options]",
+        description = {
+            "Runs the warehouse end to end: robot-sim and a bare fabric node whose behaviours are installed on demand;",
+            "judges REQ-1 and REQ-2 on robot-sim's ground truth. Exit 0: passed; 1: failed or deadline; 2: bad options."},
+        footer = "Example: ./warehouse-scenario --generate --robots 30 --carts 60 --fault-offline robot2@60s+30s")
 final class OptionsParser {
-    static final String USAGE = """
-            Usage: ./warehouse-scenario [options]
-            Runs the warehouse end to end: robot-sim and a bare fabric node whose behaviours are installed on demand;
-            judges REQ-1 and REQ-2 on robot-sim's ground truth. Exit 0: passed; 1: failed or deadline; 2: bad options.
-              --map FILE               warehouse map (default: the paper's: 3 robots, 3 carts, one door)
-              --generate               a generated warehouse instead; with
-                --width N --height N   (60 x 30)
-                --robots N --carts N   (30, 60)
-                --doors N              (width/40, at least 1: one door for 60 cells)
-              --seed N                 robot-sim's seed, and the generated map's (1)
-              --speed F                warehouse time runs F times faster than wall time (10)
-              --wait-limit SECONDS     REQ-2: longest wait of a robot behind another, warehouse s (10)
-              --deadline MINUTES       warehouse minutes before an unfinished run fails (30, or 3 per cart if more)
-              --fault-offline R@T+D    robot R offline at warehouse time T for D, e.g. robot2@60s+30s (repeatable)
-              --stop-behaviour B@T     stop behaviour bundle B (robot, door, orchestrator) at T, e.g. robot@90s
-              --node-config FILE       a .cfg/.config file for the node's Config Admin, e.g. behaviour settings
-                                       (repeatable; copied into the run's node configuration folder)
-              --no-behaviours          the node gets no behaviour repository: nothing drives the robots
-              --run-dir DIR            the run's folder (scenario/target/runs/<date-time>)
-              --report FILE            the JSON report (<run-dir>/report.json)
-              --progress SECONDS       wall seconds between two progress lines (2)
-              --root DIR               the repository root (.)
-            Example: ./warehouse-scenario --generate --robots 30 --carts 60 --fault-offline robot2@60s+30s
-            """;
+    /** picocli's message for {@code --switch=value}. */
+    private static final Pattern SWITCH_WITH_VALUE =
+            Pattern.compile("option '(--[^']+)' should be specified without");
 
-    private static final Set<String> VALUED = Set.of("map", "width", "height", "robots", "carts", "doors", "seed",
-            "speed", "wait-limit", "deadline", "fault-offline", "stop-behaviour", "node-config", "run-dir", "report",
-            "progress", "root");
-    private static final Set<String> REPEATABLE = Set.of("fault-offline", "stop-behaviour", "node-config");
-    private static final Set<String> SWITCHES = Set.of("generate", "no-behaviours", "help");
+    /** The usage text, as {@code --help} prints it. */
+    static final String USAGE = new CommandLine(new OptionsParser()).getUsageMessage();
 
-    private final Map<String, List<String>> values = new HashMap<>();
-    private final Set<String> switches = new java.util.HashSet<>();
+    @Option(names = "--map", paramLabel = "FILE", order = 1,
+            description = "warehouse map (default: the paper's: 3 robots, 3 carts, one door)")
+    private String map;
+    @Option(names = "--generate", arity = "0", order = 2, description = "a generated warehouse instead, sized by:")
+    private boolean generate;
+    @Option(names = "--width", paramLabel = "N", order = 3, description = "  cells across (60)")
+    private String width;
+    @Option(names = "--height", paramLabel = "N", order = 4, description = "  cells down (30)")
+    private String height;
+    @Option(names = "--robots", paramLabel = "N", order = 5, description = "  robots (30)")
+    private String robots;
+    @Option(names = "--carts", paramLabel = "N", order = 6, description = "  carts (60)")
+    private String carts;
+    @Option(names = "--doors", paramLabel = "N", order = 7,
+            description = "  doors (width/40, at least 1: one door for 60 cells)")
+    private String doors;
+    @Option(names = "--seed", paramLabel = "N", order = 8, description = "robot-sim's seed, and the generated map's (1)")
+    private String seed;
+    @Option(names = "--speed", paramLabel = "F", order = 9,
+            description = "warehouse time runs F times faster than wall time (10)")
+    private String speed;
+    @Option(names = "--wait-limit", paramLabel = "SECONDS", order = 10,
+            description = "REQ-2: longest wait of a robot behind another, warehouse s (10)")
+    private String waitLimit;
+    @Option(names = "--deadline", paramLabel = "MINUTES", order = 11,
+            description = "warehouse minutes before an unfinished run fails (30, or 3 per cart if more)")
+    private String deadline;
+    @Option(names = "--fault-offline", paramLabel = "R@T+D", order = 12,
+            description = "robot R offline at warehouse time T for D, e.g. robot2@15s+6s (repeatable)")
+    private List<String> faultOffline = new ArrayList<>();
+    @Option(names = "--stop-behaviour", paramLabel = "B@T", order = 13, description = {
+        "stop behaviour bundle B at T, e.g. robot@25s (repeatable); B is robot, door or",
+        "orchestrator, or a bundle's full symbolic name (with a dot)"})
+    private List<String> stopBehaviour = new ArrayList<>();
+    @Option(names = "--node-config", paramLabel = "FILE", order = 14, description = {
+        "a .cfg/.config file for the node's Config Admin, e.g. behaviour settings",
+        "(repeatable; copied into the run's node configuration folder)"})
+    private List<String> nodeConfig = new ArrayList<>();
+    @Option(names = "--no-behaviours", arity = "0", order = 15,
+            description = "the node gets no behaviour repository: nothing drives the robots")
+    private boolean noBehaviours;
+    @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
+            description = "the run's folder (scenario/target/runs/<date-time>)")
+    private String runDir;
+    @Option(names = "--report", paramLabel = "FILE", order = 17, description = "the JSON report (<run-dir>/report.json)")
+    private String report;
+    @Option(names = "--progress", paramLabel = "SECONDS", order = 18,
+            description = "wall seconds between two progress lines (2)")
+    private String progress;
+    @Option(names = "--root", paramLabel = "DIR", order = 19, description = "the repository root (.)")
+    private String root;
+    @Option(names = {"--help", "-h"}, usageHelp = true, order = 20, description = "show this help")
+    private boolean help;
 
     private OptionsParser() {
     }
@@ -52,79 +98,84 @@ final class OptionsParser {
     /** @return the options, or null when help was asked for */
     static Options parse(String... args) throws UsageException {
         OptionsParser p = new OptionsParser();
-        p.read(args);
-        return p.switches.contains("help") ? null : p.options();
+        CommandLine commandLine = new CommandLine(p);
+        try {
+            commandLine.parseArgs(args);
+        } catch (ParameterException e) {
+            throw new UsageException(message(e));
+        }
+        return commandLine.isUsageHelpRequested() ? null : p.options();
     }
 
-    private void read(String[] args) throws UsageException {
-        for (int i = 0; i < args.length; i++) {
-            String arg = args[i];
-            if (arg.equals("-h")) {
-                arg = "--help";
-            }
-            if (!arg.startsWith("--")) {
-                throw new UsageException("unexpected argument '" + arg + "' (options start with --)");
-            }
-            String name = arg.substring(2);
-            if (SWITCHES.contains(name)) {
-                switches.add(name);
-            } else if (VALUED.contains(name)) {
-                if (i + 1 >= args.length) {
-                    throw new UsageException("--" + name + " needs a value");
-                }
-                List<String> list = values.computeIfAbsent(name, k -> new ArrayList<>());
-                if (!list.isEmpty() && !REPEATABLE.contains(name)) {
-                    throw new UsageException("--" + name + " given twice");
-                }
-                list.add(args[++i]);
-            } else {
-                throw new UsageException("unknown option '" + arg + "'");
+    /** The one line for a command line picocli could not read. */
+    private static String message(ParameterException e) {
+        if (e instanceof UnmatchedArgumentException u && !u.getUnmatched().isEmpty()) {
+            String first = u.getUnmatched().get(0);
+            return first.startsWith("--") && first.length() > 2 ? "unknown option '" + first + "'"
+                    : "unexpected argument '" + first + "' (options start with --)";
+        }
+        if (e instanceof MissingParameterException m && !m.getMissing().isEmpty()
+                && m.getMissing().get(0) instanceof OptionSpec o) {
+            return o.longestName() + " needs a value";
+        }
+        if (e instanceof OverwrittenOptionException o && o.getOverwritten() instanceof OptionSpec option) {
+            return option.longestName() + " given twice";
+        }
+        if (e instanceof MaxValuesExceededException) {
+            Matcher m = SWITCH_WITH_VALUE.matcher(e.getMessage());
+            if (m.find()) {
+                return m.group(1) + " takes no value";
             }
         }
+        return e.getMessage();
     }
 
     private Options options() throws UsageException {
-        Path root = Path.of(text("root", System.getProperty("scenario.root", "."))).toAbsolutePath().normalize();
-        boolean generate = switches.contains("generate");
-        Path map = values.containsKey("map") ? Path.of(text("map", null)) : null;
-        if (generate && map != null) {
+        Path rootDir = Path.of(root != null ? root : System.getProperty("scenario.root", ".")).toAbsolutePath()
+                .normalize();
+        Path mapFile = map != null ? Path.of(map) : null;
+        if (generate && mapFile != null) {
             throw new UsageException("--map and --generate exclude each other: a map file, or a generated one");
         }
         if (!generate) {
-            for (String g : List.of("width", "height", "robots", "carts", "doors")) {
-                if (values.containsKey(g)) {
-                    throw new UsageException("--" + g + " needs --generate (it sizes a generated warehouse)");
+            String[] sizes = {width, height, robots, carts, doors};
+            String[] names = {"width", "height", "robots", "carts", "doors"};
+            for (int i = 0; i < sizes.length; i++) {
+                if (sizes[i] != null) {
+                    throw new UsageException("--" + names[i] + " needs --generate (it sizes a generated warehouse)");
                 }
             }
         }
-        if (map != null && !Files.isRegularFile(map)) {
-            throw new UsageException("--map " + map + ": no such file");
+        if (mapFile != null && !Files.isRegularFile(mapFile)) {
+            throw new UsageException("--map " + mapFile + ": no such file");
         }
         Options.Generate gen = null;
-        int carts = 3;
+        int cartCount = 3;
         if (generate) {
-            int width = integer("width", 60, 7, 5000);
-            gen = new Options.Generate(width, integer("height", 30, 12, 5000), integer("robots", 30, 1, 100_000),
-                    integer("carts", 60, 1, 1_000_000), integer("doors", Math.max(1, width / 40), 1, 10_000));
-            carts = gen.carts();
+            int w = integer("width", width, 60, 7, 5000);
+            gen = new Options.Generate(w, integer("height", height, 30, 12, 5000),
+                    integer("robots", robots, 30, 1, 100_000), integer("carts", carts, 60, 1, 1_000_000),
+                    integer("doors", doors, Math.max(1, w / 40), 1, 10_000));
+            cartCount = gen.carts();
         }
-        long seed = longValue("seed", 1);
-        double speed = decimal("speed", 10, 0.1, 1000);
-        long waitLimitMs = Math.round(decimal("wait-limit", 10, 0.5, 3600) * 1000);
-        long deadlineMs = Math.round(decimal("deadline", Math.max(30, 3 * carts), 0.01, 100_000) * 60_000);
+        long seedValue = whole("seed", seed, 1, Long.MIN_VALUE, Long.MAX_VALUE);
+        double speedValue = decimal("speed", speed, 10, 0.1, 1000);
+        long waitLimitMs = Math.round(decimal("wait-limit", waitLimit, 10, 0.5, 3600) * 1000);
+        long deadlineMs = Math.round(decimal("deadline", deadline, Math.max(30, 3 * cartCount), 0.01, 100_000)
+                * 60_000);
         List<PlannedFault> faults = new ArrayList<>();
         try {
-            for (String spec : values.getOrDefault("fault-offline", List.of())) {
+            for (String spec : faultOffline) {
                 faults.add(PlannedFault.Offline.parse(spec));
             }
-            for (String spec : values.getOrDefault("stop-behaviour", List.of())) {
+            for (String spec : stopBehaviour) {
                 faults.add(PlannedFault.StopBehaviour.parse(spec));
             }
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
         List<Path> nodeConfigs = new ArrayList<>();
-        for (String file : values.getOrDefault("node-config", List.of())) {
+        for (String file : nodeConfig) {
             Path p = Path.of(file);
             String name = p.getFileName().toString();
             if (!Files.isRegularFile(p) || !(name.endsWith(".cfg") || name.endsWith(".config"))) {
@@ -132,52 +183,44 @@ final class OptionsParser {
             }
             nodeConfigs.add(p.toAbsolutePath());
         }
-        Path runDir = values.containsKey("run-dir") ? Path.of(text("run-dir", null)).toAbsolutePath()
-                : root.resolve("scenario/target/runs")
+        Path runFolder = runDir != null ? Path.of(runDir).toAbsolutePath()
+                : rootDir.resolve("scenario/target/runs")
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
-        Path report = values.containsKey("report") ? Path.of(text("report", null)).toAbsolutePath()
-                : runDir.resolve("report.json");
-        long progressMs = Math.round(decimal("progress", 2, 0.1, 3600) * 1000);
-        return new Options(root, map, gen, seed, speed, waitLimitMs, deadlineMs, List.copyOf(faults), runDir, report,
-                progressMs, !switches.contains("no-behaviours"), List.copyOf(nodeConfigs));
+        Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
+        long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
+        return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
+                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs));
     }
 
-    private String text(String name, String fallback) {
-        List<String> v = values.get(name);
-        return v == null ? fallback : v.get(0);
+    private static int integer(String name, String text, int fallback, int min, int max) throws UsageException {
+        return (int) whole(name, text, fallback, min, max);
     }
 
-    private int integer(String name, int fallback, int min, int max) throws UsageException {
-        return (int) whole(name, fallback, min, max);
+    /** A whole number in {@code min..max}; the range is left out of the message when it is all of {@code long}. */
+    private static long whole(String name, String text, long fallback, long min, long max) throws UsageException {
+        String range = min == Long.MIN_VALUE && max == Long.MAX_VALUE ? "" : " " + min + ".." + max;
+        return number(name, text, fallback, min, max, Long::parseLong, "a whole number" + range);
     }
 
-    private long longValue(String name, long fallback) throws UsageException {
-        return whole(name, fallback, Long.MIN_VALUE, Long.MAX_VALUE);
-    }
-
-    private long whole(String name, long fallback, long min, long max) throws UsageException {
-        return number(name, fallback, min, max, Long::parseLong, "a whole number");
-    }
-
-    private double decimal(String name, double fallback, double min, double max) throws UsageException {
-        return number(name, fallback, min, max, Double::parseDouble, "a number");
-    }
-
-    private <T extends Comparable<T>> T number(String name, T fallback, T min, T max,
-                                               java.util.function.Function<String, T> parse, String kind)
+    private static double decimal(String name, String text, double fallback, double min, double max)
             throws UsageException {
-        String v = text(name, null);
-        if (v == null) {
+        return number(name, text, fallback, min, max, Double::parseDouble, "a number " + min + ".." + max);
+    }
+
+    private static <T extends Comparable<T>> T number(String name, String text, T fallback, T min, T max,
+                                                      Function<String, T> parse, String kind)
+            throws UsageException {
+        if (text == null) {
             return fallback;
         }
         try {
-            T n = parse.apply(v);
+            T n = parse.apply(text);
             if (n.compareTo(min) >= 0 && n.compareTo(max) <= 0) {
                 return n;
             }
         } catch (NumberFormatException e) {
             // said below
         }
-        throw new UsageException("--" + name + " must be " + kind + " " + min + ".." + max + ", found '" + v + "'");
+        throw new UsageException("--" + name + " must be " + kind + ", found '" + text + "'");
     }
 }

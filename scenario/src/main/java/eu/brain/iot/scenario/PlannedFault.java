@@ -1,6 +1,6 @@
 package eu.brain.iot.scenario;
 
-import java.util.regex.Matcher;
+import java.util.List;
 import java.util.regex.Pattern;
 
 /** A fault the runner injects at a warehouse time (measured from the scenario's start). */
@@ -21,22 +21,44 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
     /** What the fault does, for the progress output and the report. */
     String describe();
 
+    /** One part of a fault's text read as a warehouse time; a mistake names the part. */
+    private static long part(String prefix, String partName, String text) {
+        try {
+            return WarehouseTime.parseMillis(text);
+        } catch (IllegalArgumentException e) {
+            throw new IllegalArgumentException(prefix + "the " + partName + " " + e.getMessage(), e);
+        }
+    }
+
     /** The robot answers 503 and stands still from {@code atMillis} for {@code forMillis} (robot-sim's fault API). */
     record Offline(String robot, long atMillis, long forMillis) implements PlannedFault {
-        private static final Pattern SPEC = Pattern.compile("([^@+\\s]+)@([^+]+)\\+(.+)");
+        private static final String HOW = "write ROBOT@TIME+DURATION, e.g. robot2@60s+30s (robot2 offline 60 s into "
+                + "the scenario, for 30 s of warehouse time)";
+        private static final Pattern ROBOT = Pattern.compile("[^@+\\s]+");
 
-        /** {@code robot2@60s+30s}. */
+        /** {@code robot2@60s+30s}; a mistake is named by its part: ROBOT, TIME or DURATION. */
         static Offline parse(String spec) {
-            Matcher m = SPEC.matcher(spec);
-            if (!m.matches()) {
-                throw new IllegalArgumentException("--fault-offline '" + spec + "': write ROBOT@TIME+DURATION, "
-                        + "e.g. robot2@60s+30s (robot2 offline 60 s into the scenario, for 30 s of warehouse time)");
+            String prefix = "--fault-offline '" + spec + "': ";
+            int at = spec.indexOf('@');
+            if (at < 0) {
+                throw new IllegalArgumentException(prefix + HOW + "; the @TIME is missing");
             }
-            long forMillis = WarehouseTime.parseMillis(m.group(3));
+            String robot = spec.substring(0, at);
+            if (!ROBOT.matcher(robot).matches()) {
+                throw new IllegalArgumentException(prefix + HOW + "; "
+                        + (robot.isEmpty() ? "the ROBOT before '@' is missing" : "'" + robot + "' is no ROBOT id"));
+            }
+            int plus = spec.indexOf('+', at);
+            String time = plus < 0 ? spec.substring(at + 1) : spec.substring(at + 1, plus);
+            long atMillis = PlannedFault.part(prefix, "TIME", time);
+            if (plus < 0) {
+                throw new IllegalArgumentException(prefix + HOW + "; the +DURATION is missing");
+            }
+            long forMillis = PlannedFault.part(prefix, "DURATION", spec.substring(plus + 1));
             if (forMillis <= 0) {
-                throw new IllegalArgumentException("--fault-offline '" + spec + "': the duration must be above 0");
+                throw new IllegalArgumentException(prefix + "the DURATION must be above 0");
             }
-            return new Offline(m.group(1), WarehouseTime.parseMillis(m.group(2)), forMillis);
+            return new Offline(robot, atMillis, forMillis);
         }
 
         @Override
@@ -71,21 +93,31 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
      * @param behaviour {@code robot}, {@code door}, {@code orchestrator} or a bundle symbolic name
      */
     record StopBehaviour(String behaviour, long atMillis) implements PlannedFault {
-        private static final Pattern SPEC = Pattern.compile("([A-Za-z0-9_.\\-]+)@(.+)");
+        /** The project's behaviours by short name: each stands for {@value #PREFIX} and the name. */
+        static final List<String> SHORT_NAMES = List.of("robot", "door", "orchestrator");
+        private static final String PREFIX = "eu.brain.iot.behaviours.";
+        private static final String HOW = "write BEHAVIOUR@TIME, e.g. robot@90s (BEHAVIOUR is "
+                + String.join(", ", SHORT_NAMES) + ", or a bundle's full symbolic name, with a dot)";
+        private static final Pattern SYMBOLIC_NAME = Pattern.compile("[A-Za-z0-9_\\-]+(\\.[A-Za-z0-9_\\-]+)+");
 
-        /** {@code robot@90s}. */
+        /** {@code robot@90s}; a short name must be one of {@link #SHORT_NAMES}. */
         static StopBehaviour parse(String spec) {
-            Matcher m = SPEC.matcher(spec);
-            if (!m.matches()) {
-                throw new IllegalArgumentException("--stop-behaviour '" + spec + "': write BEHAVIOUR@TIME, e.g. "
-                        + "robot@90s (robot, door, orchestrator or a bundle symbolic name)");
+            String prefix = "--stop-behaviour '" + spec + "': ";
+            int at = spec.lastIndexOf('@');
+            if (at < 0) {
+                throw new IllegalArgumentException(prefix + HOW + "; the @TIME is missing");
             }
-            return new StopBehaviour(m.group(1), WarehouseTime.parseMillis(m.group(2)));
+            String name = spec.substring(0, at);
+            if (name.contains(".") ? !SYMBOLIC_NAME.matcher(name).matches() : !SHORT_NAMES.contains(name)) {
+                throw new IllegalArgumentException(prefix + (name.isEmpty() ? "the BEHAVIOUR before '@' is missing"
+                        : "no behaviour '" + name + "'") + "; " + HOW);
+            }
+            return new StopBehaviour(name, PlannedFault.part(prefix, "TIME", spec.substring(at + 1)));
         }
 
         /** The bundle's symbolic name: short names are the project's behaviours. */
         String symbolicName() {
-            return behaviour.contains(".") ? behaviour : "eu.brain.iot.behaviours." + behaviour;
+            return behaviour.contains(".") ? behaviour : PREFIX + behaviour;
         }
 
         @Override

@@ -109,6 +109,57 @@ class OptionsParserTest {
     void helpPrintsTheUsageAndExitsWith0() {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         assertThat(Main.run(new String[] {"--help"}, new PrintStream(out), System.err)).isZero();
-        assertThat(out.toString(StandardCharsets.UTF_8)).contains("--fault-offline R@T+D");
+        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: ./warehouse-scenario [options]")
+                .contains("--fault-offline=R@T+D").contains("--stop-behaviour=B@T");
+        out.reset();
+        assertThat(Main.run(new String[] {"-h"}, new PrintStream(out), System.err)).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: ./warehouse-scenario [options]");
+    }
+
+    @Test
+    void aStopBehaviourNamesAKnownBehaviourOrAFullSymbolicName() throws Exception {
+        assertThat(OptionsParser.parse("--stop-behaviour", "eu.brain.iot.behaviours.door@10s",
+                "--stop-behaviour", "orchestrator@1min").faults()).containsExactly(
+                new PlannedFault.StopBehaviour("eu.brain.iot.behaviours.door", 10_000),
+                new PlannedFault.StopBehaviour("orchestrator", 60_000));
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--stop-behaviour", "nosuchbundle@10s"},
+                new PrintStream(new ByteArrayOutputStream()), new PrintStream(err));
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("warehouse-scenario: --stop-behaviour "
+                + "'nosuchbundle@10s': no behaviour 'nosuchbundle'; write BEHAVIOUR@TIME, e.g. robot@90s (BEHAVIOUR is "
+                + "robot, door, orchestrator, or a bundle's full symbolic name, with a dot)\nUsage: ");
+        assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "@10s"))
+                .hasMessageStartingWith("--stop-behaviour '@10s': the BEHAVIOUR before '@' is missing");
+        assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "eu..robot@10s"))
+                .hasMessageStartingWith("--stop-behaviour 'eu..robot@10s': no behaviour 'eu..robot'");
+        assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "door@later"))
+                .hasMessage("--stop-behaviour 'door@later': the TIME 'later' is not a duration: write a number and "
+                        + "a unit, ms, s, min or h (90s, 1.5min)");
+    }
+
+    @Test
+    void aFaultOfflineMistakeNamesThePartThatIsWrong() {
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@abc"))
+                .hasMessage("--fault-offline 'robot2@abc': the TIME 'abc' is not a duration: write a number and a "
+                        + "unit, ms, s, min or h (90s, 1.5min)");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@1s+abc"))
+                .hasMessageStartingWith("--fault-offline 'robot2@1s+abc': the DURATION 'abc' is not a duration");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@1s"))
+                .hasMessageEndingWith("; the +DURATION is missing");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2"))
+                .hasMessageEndingWith("; the @TIME is missing");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "@1s+1s"))
+                .hasMessageEndingWith("; the ROBOT before '@' is missing");
+        assertThatThrownBy(() -> OptionsParser.parse("--fault-offline", "robot2@1s+0s"))
+                .hasMessage("--fault-offline 'robot2@1s+0s': the DURATION must be above 0");
+    }
+
+    @Test
+    void aSeedThatIsNoNumberDoesNotListTheWholeRange() {
+        assertThatThrownBy(() -> OptionsParser.parse("--seed", "-x")).hasMessage("--seed must be a whole number, found '-x'");
+        assertThatThrownBy(() -> OptionsParser.parse("--generate", "--width", "3"))
+                .hasMessage("--width must be a whole number 7..5000, found '3'");
+        assertThatThrownBy(() -> OptionsParser.parse("--generate=yes")).hasMessage("--generate takes no value");
     }
 }

@@ -24,8 +24,13 @@ class MainTest {
     private final ByteArrayOutputStream err = new ByteArrayOutputStream();
 
     private int run(String... args) {
-        return Main.run(args, new PrintStream(out, true, StandardCharsets.UTF_8),
-                new PrintStream(err, true, StandardCharsets.UTF_8));
+        PrintStream printed = new PrintStream(out, true, StandardCharsets.UTF_8);
+        ServeCommand serve = new ServeCommand(printed);
+        int code = Main.run(serve, args, printed, new PrintStream(err, true, StandardCharsets.UTF_8));
+        if (serve.started() != null) {
+            serve.started().close();
+        }
+        return code;
     }
 
     private String err() {
@@ -49,12 +54,20 @@ class MainTest {
         "--allow-host x.example:80 | robot-sim: --allow-host: 'x.example:80' is not a host name (give a name or an address, without scheme, port or path, e.g. robots.example or 192.168.1.20)",
         "--bind 0.0.0.0/8          | robot-sim: --bind: '0.0.0.0/8' is not a host name (give a name or an address, without scheme, port or path, e.g. robots.example or 192.168.1.20)",
         "--request-timeout-ms 5    | robot-sim: --request-timeout-ms must be a whole number 100..3600000, found '5'",
+        "--seed -x                 | robot-sim: --seed must be a whole number, found '-x'",
+        "--port 1 --port 2         | robot-sim: --port given more than once",
+        "--port --quiet            | robot-sim: --port needs a value",
+        "-x                        | robot-sim: unexpected argument '-x'",
+        "generate --width 3        | robot-sim: --width must be a whole number 7..5000, found '3'",
+        "generate --seed 1.5       | robot-sim: --seed must be a whole number, found '1.5'",
+        "generate --colour red     | robot-sim: unknown option --colour",
+        "generate fly              | robot-sim: unexpected argument 'fly'",
     })
     void badCommandLinesGiveOneLineAndUsageWithoutStackTrace(String args, String firstLine) {
         assertThat(run(args.split(" "))).isEqualTo(2);
         String[] lines = err().split("\n");
         assertThat(lines[0]).isEqualTo(firstLine);
-        assertThat(lines[1]).startsWith("Usage:");
+        assertThat(lines[1]).startsWith("Usage: java -jar robot-sim.jar " + (args.startsWith("generate") ? "generate" : "["));
         assertThat(err()).doesNotContain("Exception").doesNotContain("\tat ");
     }
 
@@ -69,14 +82,21 @@ class MainTest {
     @Test
     void helpIsPrintedAndExitsZero() {
         assertThat(run("--help")).isZero();
-        assertThat(out.toString(StandardCharsets.UTF_8)).contains("--manual-step").contains("--fault SPEC");
+        assertThat(out.toString(StandardCharsets.UTF_8)).contains("--manual-step").contains("--fault=SPEC")
+                .contains("robot-sim.jar generate --help");
+        out.reset();
         assertThat(run("generate", "--help")).isZero();
+        assertThat(out.toString(StandardCharsets.UTF_8)).startsWith("Usage: java -jar robot-sim.jar generate")
+                .contains("--doors=N").contains("Example: ");
+        assertThat(err()).isEmpty();
     }
 
     @Test
     void startsAndPrintsEveryRobotAndDoorUrl() throws Exception {
-        RobotSim sim = ServeCommand.start(new String[] {"--port", "0", "--manual-step", "--seed", "5"},
-                new PrintStream(out, true, StandardCharsets.UTF_8));
+        ServeCommand serve = new ServeCommand(new PrintStream(out, true, StandardCharsets.UTF_8));
+        assertThat(Main.run(serve, new String[] {"--port", "0", "--manual-step", "--seed", "5"}, System.out,
+                new PrintStream(err, true, StandardCharsets.UTF_8))).isEqualTo(ServeCommand.RUNNING);
+        RobotSim sim = serve.started();
         try {
             String printed = out.toString(StandardCharsets.UTF_8);
             String base = "http://127.0.0.1:" + sim.port() + "/";
@@ -92,10 +112,9 @@ class MainTest {
 
     @Test
     void flagsReachTheConfiguration() throws Exception {
-        SimConfig c = ServeCommand.config(Flags.parse(new String[] {"--bind=0.0.0.0", "--speed", "100",
-            "--door-open-steps", "0", "--deadlock-steps", "9", "--fault", "latencyMs=20,dropRate=0.25",
-            "--fault", "robot2:offline=true"}, java.util.Set.of("bind", "speed", "door-open-steps",
-            "deadlock-steps", "fault"), java.util.Set.of()));
+        SimConfig c = ServeCommand.parse("--bind=0.0.0.0", "--speed", "100", "--door-open-steps", "0",
+                "--deadlock-steps", "9", "--fault", "latencyMs=20,dropRate=0.25", "--fault", "robot2:offline=true")
+                .config();
         assertThat(c.bindAddress()).isEqualTo("0.0.0.0");
         assertThat(c.port()).isEqualTo(ServeCommand.DEFAULT_PORT);
         assertThat(c.stepPeriodNanos()).isEqualTo(5_000_000L);
@@ -111,9 +130,8 @@ class MainTest {
 
     @Test
     void hardeningFlagsReachTheConfiguration() throws Exception {
-        SimConfig c = ServeCommand.config(Flags.parse(new String[] {"--max-queue", "5", "--allow-host",
-            "Robots.Example", "--allow-host", "fe80::1", "--request-timeout-ms", "2500"},
-            java.util.Set.of("max-queue", "allow-host", "request-timeout-ms"), java.util.Set.of()));
+        SimConfig c = ServeCommand.parse("--max-queue", "5", "--allow-host", "Robots.Example", "--allow-host",
+                "fe80::1", "--request-timeout-ms", "2500").config();
         assertThat(c.maxQueuedMissions()).isEqualTo(5);
         assertThat(c.allowedHosts()).containsExactlyInAnyOrder("robots.example", "[fe80::1]");
         assertThat(c.requestTimeoutMillis()).isEqualTo(2500);
@@ -134,5 +152,24 @@ class MainTest {
         assertThat(MapParser.parse(two).doors()).hasSize(2);
         assertThat(run("generate", "--width", "20", "--height", "20", "--robots", "5", "--carts", "5000")).isEqualTo(2);
         assertThat(err()).contains("carts do not fit");
+    }
+
+    @Test
+    void aMapThatCannotBeWrittenIsOneLineAndExitCode1() {
+        Path file = dir.resolve("no-such-folder/big.map");
+        assertThat(run("generate", "--robots", "5", "--carts", "5", "--out", file.toString())).isEqualTo(1);
+        assertThat(err()).isEqualTo("robot-sim: --out: cannot write '" + file + "': no such folder\n");
+    }
+
+    @Test
+    void theDefaultsAreThoseTheUsageStates() throws Exception {
+        SimConfig c = ServeCommand.parse().config();
+        assertThat(c.port()).isEqualTo(8090);
+        assertThat(c.bindAddress()).isEqualTo("127.0.0.1");
+        assertThat(c.rules().seed()).isEqualTo(1);
+        assertThat(c.rules().deadlockSteps()).isEqualTo(4);
+        assertThat(c.stepMillis()).isEqualTo(500);
+        assertThat(c.speed()).isEqualTo(1.0);
+        assertThat(c.manualStep()).isFalse();
     }
 }

@@ -1,9 +1,9 @@
-package eu.brain.iot.robotsim.load;
+package eu.brain.iot.benchmarks.robotsim;
 
 import com.sun.net.httpserver.HttpExchange;
 import com.sun.net.httpserver.HttpServer;
-import eu.brain.iot.robotsim.cli.Flags;
-import eu.brain.iot.robotsim.cli.UsageException;
+import eu.brain.iot.robotsim.cli.CliErrors;
+import eu.brain.iot.robotsim.cli.Values;
 import eu.brain.iot.robotsim.view.Json;
 import eu.brain.iot.robotsim.view.RobotView;
 import eu.brain.iot.robotsim.world.MapGenerator;
@@ -17,30 +17,68 @@ import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
+import java.util.concurrent.Callable;
 import java.util.concurrent.Executors;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * The measurement behind choosing Netty: the JDK's built-in {@code com.sun.net.httpserver} serving the same
  * pre-serialized robot states on the same paths, to be polled with {@code poll-load}. Not used by the simulator.
- * <pre>java -cp robot-sim.jar eu.brain.iot.robotsim.load.JdkServerBaseline --port 18092 --robots 10000 --threads 2</pre>
+ * The server's threads are the JDK's (its dispatcher, and the handler pool when {@code --threads} is above 0); they
+ * only read the maps built before it starts.
+ * <pre>java -cp benchmarks/target/benchmarks.jar eu.brain.iot.benchmarks.robotsim.JdkServerBaseline --port 18092 --robots 10000 --threads 2</pre>
  */
-public final class JdkServerBaseline {
+@Command(name = "jdk-baseline", sortOptions = false, usageHelpWidth = 120,
+        customSynopsis = "java -cp benchmarks/target/benchmarks.jar "
+                + "eu.brain.iot.benchmarks.robotsim.JdkServerBaseline [options]")
+public final class JdkServerBaseline implements Callable<Integer> {
+    /** What {@link #call()} returns: the server was started and keeps running. */
+    static final int RUNNING = -1;
+
+    @Spec
+    private CommandSpec spec;
+    private int port = 18092;
+    private int robots = 10_000;
+    private int threads;
+
+    @Option(names = {"--help", "-h"}, usageHelp = true, order = 4, description = "show this help")
+    private boolean help;
+
     private JdkServerBaseline() {
     }
 
-    public static void main(String[] args) throws IOException {
-        try {
-            Flags f = Flags.parse(args, Set.of("port", "robots", "threads"), Set.of());
-            int port = f.intValue("port", 18092, 1, 65535);
-            int robots = f.intValue("robots", 10_000, 1, 1_000_000);
-            int threads = f.intValue("threads", 0, 0, 1024);
-            serve(port, robots, threads);
-        } catch (UsageException e) {
-            System.err.println("jdk-baseline: " + e.getMessage()
-                    + "\nUsage: --port N --robots N --threads N (0 = handlers on the dispatcher thread)");
-            System.exit(2);
+    public static void main(String[] args) {
+        int code = CliErrors.install(new CommandLine(new JdkServerBaseline()), "jdk-baseline", false, System.out,
+                System.err).execute(args);
+        if (code != RUNNING) {
+            System.exit(code);
         }
+    }
+
+    @Option(names = "--port", paramLabel = "N", order = 1, description = "port to listen on (default 18092)")
+    void port(String v) {
+        port = Values.wholeInt(spec, "--port", v, 1, 65535);
+    }
+
+    @Option(names = "--robots", paramLabel = "N", order = 2, description = "robots served (default 10000)")
+    void robots(String v) {
+        robots = Values.wholeInt(spec, "--robots", v, 1, 1_000_000);
+    }
+
+    @Option(names = "--threads", paramLabel = "N", order = 3,
+            description = "handler threads (default 0: handlers on the dispatcher thread)")
+    void threads(String v) {
+        threads = Values.wholeInt(spec, "--threads", v, 0, 1024);
+    }
+
+    @Override
+    public Integer call() throws IOException {
+        serve(port, robots, threads);
+        return RUNNING;
     }
 
     private static void serve(int port, int robots, int threads) throws IOException {

@@ -1,8 +1,8 @@
-package eu.brain.iot.robotsim.load;
+package eu.brain.iot.benchmarks.robotsim;
 
 import com.fasterxml.jackson.databind.JsonNode;
-import eu.brain.iot.robotsim.cli.Flags;
-import eu.brain.iot.robotsim.cli.UsageException;
+import eu.brain.iot.robotsim.cli.CliErrors;
+import eu.brain.iot.robotsim.cli.Values;
 import eu.brain.iot.robotsim.view.Json;
 import io.netty.bootstrap.Bootstrap;
 import io.netty.buffer.ByteBuf;
@@ -33,28 +33,25 @@ import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.List;
-import java.util.Set;
+import java.util.concurrent.Callable;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicInteger;
 import java.util.concurrent.atomic.LongAdder;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.ParameterException;
+import picocli.CommandLine.Spec;
 
 /**
- * The load command: many keep-alive HTTP/1.1 connections (an asynchronous Netty client), each polling
- * {@code GET /{robot}/robot_local_control/state} round-robin over every robot as fast as answers come. Runs for a
- * warm-up and a measured period, then stops by itself and prints polls/s, errors and latency.
+ * The poll load: many keep-alive HTTP/1.1 connections (an asynchronous Netty client), each polling
+ * {@code GET /{robot}/robot_local_control/state} round-robin over every robot of a running robot-sim as fast as
+ * answers come. Runs for a warm-up and a measured period, then stops by itself and prints polls/s, errors and latency.
+ * The counters are shared by the Netty I/O threads (adders, atomics); each {@link Poller} is confined to its
+ * channel's event loop; {@code running} is written by the main thread.
  */
 public final class PollLoad {
-    public static final String USAGE = """
-            Usage: java -jar robot-sim.jar poll-load [options]    (start the simulator first)
-              --url URL           simulator base URL (default http://127.0.0.1:8090/)
-              --connections N     keep-alive connections (default 128)
-              --threads N         client I/O threads (default 1)
-              --warmup S          seconds polled before measuring (default 5)
-              --duration S        seconds measured (default 20)
-              --check-every N     parse and check one answer in N as JSON (default 1000)
-            The robot list comes from GET / of the simulator. Exit code 1 when an error was seen.
-            """;
-
     private final List<String> paths;
     private final String hostHeader;
     private final AtomicInteger nextRobot = new AtomicInteger();
@@ -72,20 +69,79 @@ public final class PollLoad {
     }
 
     public static void main(String[] args) {
-        System.exit(run(args, System.out));
+        System.exit(run(args, System.out, System.err));
     }
 
-    /** Returns the exit code: 0 fine, 1 errors seen, 2 bad command line. */
-    public static int run(String[] args, PrintStream out) {
-        try {
-            Flags f = Flags.parse(args, Set.of("url", "connections", "threads", "warmup", "duration", "check-every"),
-                    Set.of());
-            URI base = URI.create(withSlash(f.string("url", "http://127.0.0.1:8090/")));
-            int connections = f.intValue("connections", 128, 1, 10_000);
-            int threads = f.intValue("threads", 1, 1, 64);
-            int warmup = f.intValue("warmup", 5, 0, 3600);
-            int duration = f.intValue("duration", 20, 1, 3600);
-            int checkEvery = f.intValue("check-every", 1000, 1, Integer.MAX_VALUE);
+    /** Returns the exit code: 0 fine, 1 errors seen or the simulator not reachable, 2 bad command line. */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        return CliErrors.install(new CommandLine(new Options(out)), "poll-load", false, out, err).execute(args);
+    }
+
+    /** The command line. */
+    @Command(name = "poll-load", sortOptions = false, usageHelpWidth = 120,
+            customSynopsis = "java -cp benchmarks/target/benchmarks.jar eu.brain.iot.benchmarks.robotsim.PollLoad "
+                    + "[options]    (start the simulator first)",
+            footer = "The robot list comes from GET / of the simulator. Exit code 1 when an error was seen.")
+    static final class Options implements Callable<Integer> {
+        @Spec
+        private CommandSpec spec;
+        private final PrintStream out;
+        private URI base = URI.create("http://127.0.0.1:8090/");
+        private int connections = 128;
+        private int threads = 1;
+        private int warmup = 5;
+        private int duration = 20;
+        private int checkEvery = 1000;
+
+        @Option(names = {"--help", "-h"}, usageHelp = true, order = 7, description = "show this help")
+        private boolean help;
+
+        Options(PrintStream out) {
+            this.out = out;
+        }
+
+        @Option(names = "--url", paramLabel = "URL", order = 1,
+                description = "simulator base URL (default http://127.0.0.1:8090/)")
+        void url(String v) {
+            try {
+                base = URI.create(withSlash(v));
+            } catch (IllegalArgumentException e) {
+                throw new ParameterException(spec.commandLine(), "--url: " + e.getMessage());
+            }
+            if (base.getHost() == null || base.getPort() < 0) {
+                throw new ParameterException(spec.commandLine(),
+                        "--url must be http://HOST:PORT/, found '" + v + "'");
+            }
+        }
+
+        @Option(names = "--connections", paramLabel = "N", order = 2, description = "keep-alive connections (default 128)")
+        void connections(String v) {
+            connections = Values.wholeInt(spec, "--connections", v, 1, 10_000);
+        }
+
+        @Option(names = "--threads", paramLabel = "N", order = 3, description = "client I/O threads (default 1)")
+        void threads(String v) {
+            threads = Values.wholeInt(spec, "--threads", v, 1, 64);
+        }
+
+        @Option(names = "--warmup", paramLabel = "S", order = 4, description = "seconds polled before measuring (default 5)")
+        void warmup(String v) {
+            warmup = Values.wholeInt(spec, "--warmup", v, 0, 3600);
+        }
+
+        @Option(names = "--duration", paramLabel = "S", order = 5, description = "seconds measured (default 20)")
+        void duration(String v) {
+            duration = Values.wholeInt(spec, "--duration", v, 1, 3600);
+        }
+
+        @Option(names = "--check-every", paramLabel = "N", order = 6,
+                description = "parse and check one answer in N as JSON (default 1000)")
+        void checkEvery(String v) {
+            checkEvery = Values.wholeInt(spec, "--check-every", v, 1, Integer.MAX_VALUE);
+        }
+
+        @Override
+        public Integer call() throws IOException, InterruptedException {
             List<String> robots = robots(base);
             List<String> paths = new ArrayList<>(robots.size());
             for (String id : robots) {
@@ -93,16 +149,6 @@ public final class PollLoad {
             }
             PollLoad load = new PollLoad(paths, base.getHost() + ":" + base.getPort(), checkEvery);
             return load.drive(base, connections, threads, warmup, duration, out);
-        } catch (UsageException | IllegalArgumentException e) {
-            out.println("poll-load: " + e.getMessage());
-            out.print(USAGE);
-            return 2;
-        } catch (IOException e) {
-            out.println("poll-load: " + e.getMessage());
-            return 1;
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            return 1;
         }
     }
 

@@ -1,7 +1,8 @@
-package eu.brain.iot.robotsim.load;
+package eu.brain.iot.benchmarks.robotsim;
 
-import eu.brain.iot.robotsim.cli.Flags;
+import eu.brain.iot.robotsim.cli.CliErrors;
 import eu.brain.iot.robotsim.cli.UsageException;
+import eu.brain.iot.robotsim.cli.Values;
 import eu.brain.iot.robotsim.view.ViewPublisher;
 import eu.brain.iot.robotsim.world.CommandRejectedException;
 import eu.brain.iot.robotsim.world.Commands;
@@ -15,42 +16,86 @@ import eu.brain.iot.robotsim.world.World;
 import java.io.PrintStream;
 import java.util.Arrays;
 import java.util.Random;
-import java.util.Set;
+import java.util.concurrent.Callable;
+import picocli.CommandLine;
+import picocli.CommandLine.Command;
+import picocli.CommandLine.Model.CommandSpec;
+import picocli.CommandLine.Option;
+import picocli.CommandLine.Spec;
 
 /**
  * Times the world thread's work per step on a generated warehouse: the step itself (missions, path planning,
  * sensors, moves, counters) plus publishing the changed robots' JSON. Every idle robot gets a new random errand
  * (go somewhere, pick or place) each step, so all robots keep working.
  */
-public final class StepBench {
-    public static final String USAGE = """
-            Usage: java -jar robot-sim.jar step-bench [options]
-              --robots N   robots (default 1000)
-              --carts N    carts (default 2000)
-              --width N    map width (default 200)
-              --height N   map height (default 100)
-              --steps N    measured steps (default 600)
-              --warmup N   steps before measuring (default 200)
-              --seed N     seed of the map and the errands (default 1)
-            """;
+@Command(name = "step-bench", sortOptions = false, usageHelpWidth = 120,
+        customSynopsis = "java -cp benchmarks/target/benchmarks.jar eu.brain.iot.benchmarks.robotsim.StepBench "
+                + "[options]")
+public final class StepBench implements Callable<Integer> {
+    @Spec
+    private CommandSpec spec;
+    private final PrintStream out;
+    private int robots = 1000;
+    private int carts = 2000;
+    private int width = 200;
+    private int height = 100;
+    private int steps = 600;
+    private int warmup = 200;
+    private long seed = 1;
 
-    private StepBench() {
+    @Option(names = {"--help", "-h"}, usageHelp = true, order = 8, description = "show this help")
+    private boolean help;
+
+    private StepBench(PrintStream out) {
+        this.out = out;
     }
 
-    public static void main(String[] args) throws UsageException {
-        run(args, System.out);
+    public static void main(String[] args) {
+        System.exit(run(args, System.out, System.err));
     }
 
-    public static void run(String[] args, PrintStream out) throws UsageException {
-        Flags f = Flags.parse(args, Set.of("robots", "carts", "width", "height", "steps", "warmup", "seed"),
-                Set.of());
-        int robots = f.intValue("robots", 1000, 1, 1_000_000);
-        int carts = f.intValue("carts", 2000, 0, 1_000_000);
-        int width = f.intValue("width", 200, 7, 5000);
-        int height = f.intValue("height", 100, 12, 5000);
-        int steps = f.intValue("steps", 600, 1, 1_000_000);
-        int warmup = f.intValue("warmup", 200, 0, 1_000_000);
-        long seed = f.longValue("seed", 1, Long.MIN_VALUE, Long.MAX_VALUE);
+    /** Returns the exit code: 0 measured, 2 bad command line. */
+    public static int run(String[] args, PrintStream out, PrintStream err) {
+        return CliErrors.install(new CommandLine(new StepBench(out)), "step-bench", false, out, err).execute(args);
+    }
+
+    @Option(names = "--robots", paramLabel = "N", order = 1, description = "robots (default 1000)")
+    void robots(String v) {
+        robots = Values.wholeInt(spec, "--robots", v, 1, 1_000_000);
+    }
+
+    @Option(names = "--carts", paramLabel = "N", order = 2, description = "carts (default 2000)")
+    void carts(String v) {
+        carts = Values.wholeInt(spec, "--carts", v, 0, 1_000_000);
+    }
+
+    @Option(names = "--width", paramLabel = "N", order = 3, description = "map width (default 200)")
+    void width(String v) {
+        width = Values.wholeInt(spec, "--width", v, 7, 5000);
+    }
+
+    @Option(names = "--height", paramLabel = "N", order = 4, description = "map height (default 100)")
+    void height(String v) {
+        height = Values.wholeInt(spec, "--height", v, 12, 5000);
+    }
+
+    @Option(names = "--steps", paramLabel = "N", order = 5, description = "measured steps (default 600)")
+    void steps(String v) {
+        steps = Values.wholeInt(spec, "--steps", v, 1, 1_000_000);
+    }
+
+    @Option(names = "--warmup", paramLabel = "N", order = 6, description = "steps before measuring (default 200)")
+    void warmup(String v) {
+        warmup = Values.wholeInt(spec, "--warmup", v, 0, 1_000_000);
+    }
+
+    @Option(names = "--seed", paramLabel = "N", order = 7, description = "seed of the map and the errands (default 1)")
+    void seed(String v) {
+        seed = Values.whole(spec, "--seed", v, Long.MIN_VALUE, Long.MAX_VALUE);
+    }
+
+    @Override
+    public Integer call() throws UsageException {
         WarehouseMap map;
         try {
             map = MapGenerator.generate(width, height, robots, carts, Math.max(1, width / 40), seed);
@@ -89,6 +134,8 @@ public final class StepBench {
                 REPLAN_ROUNDS, worstReplan / 1e6);
         out.printf("after %d steps: near misses %d, deadlocks %d%n", world.step(), world.nearMisses(),
                 world.deadlocks());
+        out.flush();
+        return 0;
     }
 
     private static final int REPLAN_ROUNDS = 5;

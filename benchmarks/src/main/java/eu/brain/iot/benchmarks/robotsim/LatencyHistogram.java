@@ -1,4 +1,4 @@
-package eu.brain.iot.robotsim.load;
+package eu.brain.iot.benchmarks.robotsim;
 
 import java.util.concurrent.atomic.AtomicLongArray;
 

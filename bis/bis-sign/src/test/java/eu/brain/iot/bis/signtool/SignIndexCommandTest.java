@@ -1,7 +1,8 @@
-package eu.brain.iot.bis.sign;
+package eu.brain.iot.bis.signtool;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import eu.brain.iot.bis.sign.IndexSigning;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
@@ -63,7 +64,7 @@ class SignIndexCommandTest {
     @Test
     void badUsageAndBadKeysAreExplainedWithoutAStackTrace() throws Exception {
         assertThat(command.run("sign-index", "index.xml")).isEqualTo(2);
-        assertThat(err.toString()).contains("sign-index needs --key", "usage:");
+        assertThat(err.toString()).contains("sign-index needs --key", "Usage:");
 
         Path notAKey = Files.writeString(dir.resolve("bad.key"), "hello");
         Path index = Files.writeString(dir.resolve("index.xml"), "<repository/>");
@@ -76,15 +77,39 @@ class SignIndexCommandTest {
     }
 
     @Test
-    void verifiesAnOpensslStyleKeyAndRejectsAMalformedSignature() throws Exception {
-        KeyPair keys = IndexSigning.generateKeyPair();
-        byte[] data = "index".getBytes(StandardCharsets.UTF_8);
-        String signature = IndexSigning.sign(keys.getPrivate(), data);
-        // bare base64 (no PEM armour) is accepted too
-        String bare = IndexSigning.publicKeyPem(keys.getPublic()).lines().filter(l -> !l.startsWith("-----"))
-                .reduce("", String::concat);
-        assertThat(IndexSigning.verify(IndexSigning.readPublicKey(bare), data, signature)).isTrue();
-        assertThat(IndexSigning.verify(keys.getPublic(), data, "not base64 !")).isFalse();
-        assertThat(IndexSigning.fingerprint(keys.getPublic())).hasSize(16);
+    void badCommandLinesAreOneLineThenTheUsageAndExitCode2() throws Exception {
+        assertThat(command.run()).isEqualTo(2);
+        assertThat(err.toString()).startsWith("Usage: sign-index --key PRIVATE.pem");
+        err.reset();
+        assertThat(command.run("sign-index", "--colour", "index.xml")).isEqualTo(2);
+        assertThat(err.toString()).startsWith("unknown option --colour\nUsage: sign-index --key PRIVATE.pem");
+        err.reset();
+        assertThat(command.run("sign-everything")).isEqualTo(2);
+        assertThat(err.toString()).startsWith("unknown command sign-everything\nUsage: ");
+        err.reset();
+        assertThat(command.run("verify-index", "--public")).isEqualTo(2);
+        assertThat(err.toString()).startsWith("--public needs a value\nUsage: ");
+        err.reset();
+        assertThat(command.run("verify-index", "index.xml")).isEqualTo(2);
+        assertThat(err.toString()).startsWith("verify-index needs --public and at least one INDEX\nUsage: ");
+        err.reset();
+        assertThat(command.run("generate-key", "--key", dir.resolve("k").toString())).isEqualTo(2);
+        assertThat(err.toString()).startsWith("generate-key needs --key and --public\nUsage: ");
+        err.reset();
+        assertThat(command.run("sign-index", "--generate-if-missing", "--key", dir.resolve("k").toString(), "i.xml"))
+                .isEqualTo(2);
+        assertThat(err.toString()).startsWith("--generate-if-missing needs --public, where the public key is written");
+        assertThat(out.toString()).isEmpty();
+    }
+
+    @Test
+    void anIndexWithoutSignatureFailsVerificationWithExitCode1() throws Exception {
+        Path index = Files.writeString(dir.resolve("index.xml"), "<repository/>");
+        Path pub = dir.resolve("k.pub");
+        assertThat(command.run("generate-key", "--key", dir.resolve("k.key").toString(), "--public", pub.toString()))
+                .isZero();
+        assertThat(out.toString()).startsWith("generated key ");
+        assertThat(command.run("verify-index", "--public", pub.toString(), index.toString())).isEqualTo(1);
+        assertThat(err.toString()).isEqualTo(index + ": no signature file " + index + ".sig (sign it with sign-index)\n");
     }
 }
