@@ -3,10 +3,13 @@ package eu.brain.iot.robotsim;
 import com.fasterxml.jackson.databind.JsonNode;
 import eu.brain.iot.robotsim.fault.FaultTable;
 import eu.brain.iot.robotsim.http.CommandCounter;
+import eu.brain.iot.robotsim.http.CommandOriginLog;
 import eu.brain.iot.robotsim.http.HttpServer;
+import eu.brain.iot.robotsim.view.CommandOrigins;
 import eu.brain.iot.robotsim.view.DoorView;
 import eu.brain.iot.robotsim.view.Json;
 import eu.brain.iot.robotsim.view.RobotView;
+import eu.brain.iot.robotsim.view.ViewPublisher;
 import eu.brain.iot.robotsim.view.WorldDocument;
 import eu.brain.iot.robotsim.world.Placement;
 import eu.brain.iot.robotsim.world.World;
@@ -41,10 +44,13 @@ public final class RobotSim implements AutoCloseable {
     private final Map<String, Integer> robots;
     private final Map<String, Integer> doors;
     private final CommandCounter commands;
+    private final CommandOriginLog origins;
 
     private RobotSim(SimConfig config, FaultTable faults, WorldThread world, HttpServer server,
-                     Map<String, Integer> robots, Map<String, Integer> doors, CommandCounter commands) {
+                     Map<String, Integer> robots, Map<String, Integer> doors, CommandCounter commands,
+                     CommandOriginLog origins) {
         this.commands = commands;
+        this.origins = origins;
         this.config = config;
         this.faults = faults;
         this.world = world;
@@ -85,12 +91,16 @@ public final class RobotSim implements AutoCloseable {
         index.put("robots", List.copyOf(robots.keySet()));
         index.put("doors", List.copyOf(doors.keySet()));
         CommandCounter commands = new CommandCounter();
+        long stepMillis = config.stepMillis();
+        ViewPublisher views = worldThread.views();
+        CommandOriginLog origins = new CommandOriginLog(() -> views.step() * stepMillis, System::currentTimeMillis,
+                CommandOriginLog.DEFAULT_CAPACITY);
         HttpServer server;
         try {
             server = HttpServer.start(config.bindAddress(), config.port(), config.ioThreads(),
                     new HttpServer.Limits(config.allowedHosts(), config.requestTimeoutMillis()),
                     new HttpServer.Wiring(worldThread, worldThread.views(), faults, robots, doors,
-                            List.copyOf(robots.keySet()), index, config.stepMillis(), commands));
+                            List.copyOf(robots.keySet()), index, config.stepMillis(), commands, origins));
         } catch (IOException | RuntimeException e) {
             worldThread.close();
             throw e;
@@ -98,7 +108,7 @@ public final class RobotSim implements AutoCloseable {
         if (!config.manualStep()) {
             worldThread.startClock(config.stepPeriodNanos());
         }
-        return new RobotSim(config, faults, worldThread, server, robots, doors, commands);
+        return new RobotSim(config, faults, worldThread, server, robots, doors, commands, origins);
     }
 
     private static Map<String, Integer> indexOf(List<Placement> placements) {
@@ -185,7 +195,12 @@ public final class RobotSim implements AutoCloseable {
     /** What {@code GET /world} answers now: map, robots, carts, doors and counters. */
     public JsonNode worldDocument() {
         return inspect(w -> Json.MAPPER.valueToTree(
-                WorldDocument.world(w, config.stepMillis(), commands.snapshot())));
+                WorldDocument.world(w, config.stepMillis(), commands.snapshot(), origins.snapshot())));
+    }
+
+    /** Which node commanded each robot last, and the hand-overs between nodes ({@code commandOrigins} of /world). */
+    public CommandOrigins commandOrigins() {
+        return origins.snapshot();
     }
 
     private static <T> T await(java.util.concurrent.CompletableFuture<T> f) {

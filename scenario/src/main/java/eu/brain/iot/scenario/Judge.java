@@ -1,8 +1,10 @@
 package eu.brain.iot.scenario;
 
+import java.time.Instant;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
+import java.util.TreeSet;
 import java.util.stream.Collectors;
 
 /**
@@ -15,12 +17,25 @@ import java.util.stream.Collectors;
  *       errand's destination was reached: every robot is back in the docking area, idle, carrying nothing;</li>
  *   <li>commands: every command the fleet received was accepted, or its refusal was handled (the run completed in
  *       spite of it);</li>
+ *   <li>one node at a time per robot: no robot commanded by two nodes within a lease period of wall time (a
+ *       robot handed over by a node that died is commanded by its new owner only after the lease expired); a run
+ *       on one node has one commander;</li>
  *   <li>the run ended before its deadline.</li>
  * </ul>
  * Stateless.
  */
 final class Judge {
+    /** The lease period of a robot's ownership in a fabric of nodes, in wall time, unless told otherwise. */
+    static final long DEFAULT_LEASE_MS = 2_000;
+    /** Hand-overs named in a failed check; the others are counted. */
+    private static final int SHOWN = 10;
+
     private Judge() {
+    }
+
+    /** {@link #judge(WorldSnapshot, long, long, long)} with the default lease period ({@value #DEFAULT_LEASE_MS} ms). */
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs) {
+        return judge(end, waitLimitMs, deadlineHitMs, DEFAULT_LEASE_MS);
     }
 
     /**
@@ -28,8 +43,9 @@ final class Judge {
      * @param waitLimitMs    the longest a robot may wait behind another (warehouse ms)
      * @param deadlineHitMs  the warehouse time (since the scenario's start) at which the deadline ended the run, or
      *                       -1 when the run ended by itself
+     * @param leaseMs        the lease period (wall ms): two nodes commanding one robot closer than this fail the run
      */
-    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs) {
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs, long leaseMs) {
         boolean deadlineHit = deadlineHitMs >= 0;
         List<Verdict.Check> checks = new ArrayList<>();
         List<String> missing = end.cartsNotInStorage();
@@ -54,6 +70,7 @@ final class Judge {
                         : "not back: " + String.join("; ", away)));
 
         checks.add(commands(end, missing.isEmpty() && away.isEmpty()));
+        checks.add(oneCommanderAtATime(end, leaseMs));
 
         checks.add(new Verdict.Check("finished before the deadline", !deadlineHit, deadlineHit
                 ? "the deadline ended the run at " + WarehouseTime.format(deadlineHitMs) + " of warehouse time"
@@ -80,5 +97,46 @@ final class Judge {
         }
         return new Verdict.Check(name, completed, counts + (completed ? "; the run completed in spite of them"
                 : "; the run did not complete: refusals may not have been handled"));
+    }
+
+    /**
+     * No robot commanded by two nodes within the lease period: each hand-over's two commands (the old node's last,
+     * the new node's first) at least {@code leaseMs} of wall time apart.
+     */
+    static Verdict.Check oneCommanderAtATime(WorldSnapshot end, long leaseMs) {
+        String name = "one node commanding each robot at a time (hand-overs at least " + WarehouseTime.format(leaseMs)
+                + " of wall time apart)";
+        Map<String, String> last = end.lastCommanders();
+        if (last.isEmpty()) {
+            return new Verdict.Check(name, true, "no robot took a command");
+        }
+        List<WorldSnapshot.Handover> handovers = end.handovers();
+        List<WorldSnapshot.Handover> tooClose = handovers.stream().filter(h -> h.gapWallMillis() < leaseMs).toList();
+        if (!tooClose.isEmpty()) {
+            String shown = tooClose.stream().limit(SHOWN).map(Judge::describe).collect(Collectors.joining("; "));
+            return new Verdict.Check(name, false, tooClose.size() + " robot command(s) from a second node within the "
+                    + "lease: " + shown + (tooClose.size() > SHOWN ? "; and " + (tooClose.size() - SHOWN) + " more"
+                    : ""));
+        }
+        TreeSet<String> nodes = new TreeSet<>(last.values());
+        handovers.forEach(h -> {
+            nodes.add(h.from());
+            nodes.add(h.to());
+        });
+        if (handovers.isEmpty()) {
+            return new Verdict.Check(name, true, last.size() + " robot(s), each commanded by one node only: "
+                    + String.join(", ", nodes));
+        }
+        long closest = handovers.stream().mapToLong(WorldSnapshot.Handover::gapWallMillis).min().orElse(0);
+        return new Verdict.Check(name, true, last.size() + " robot(s) commanded by " + String.join(", ", nodes) + "; "
+                + end.handoverCount() + " hand-over(s), the closest " + WarehouseTime.format(closest)
+                + " of wall time apart");
+    }
+
+    private static String describe(WorldSnapshot.Handover h) {
+        return h.robot() + " by " + h.from() + " at " + WarehouseTime.format(h.fromWarehouseMs()) + " then by "
+                + h.to() + " at " + WarehouseTime.format(h.warehouseMs()) + " of warehouse time ("
+                + Instant.ofEpochMilli(h.fromWallMillis()) + " and " + Instant.ofEpochMilli(h.wallMillis())
+                + ", " + WarehouseTime.format(h.gapWallMillis()) + " of wall time apart)";
     }
 }

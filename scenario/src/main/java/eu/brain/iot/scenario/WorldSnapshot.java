@@ -2,6 +2,8 @@ package eu.brain.iot.scenario;
 
 import com.fasterxml.jackson.databind.JsonNode;
 import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
@@ -13,6 +15,23 @@ import java.util.TreeMap;
 record WorldSnapshot(JsonNode doc) {
 
     private static final int DOCKING = 1;
+
+    /**
+     * A robot commanded by another node than the one that commanded it before (robot-sim's {@code commandOrigins}):
+     * {@code from}'s last command, then {@code to}'s, in warehouse time and wall time (epoch ms).
+     */
+    record Handover(String robot, String from, String to, long fromWarehouseMs, long fromWallMillis,
+                    long warehouseMs, long wallMillis) {
+        long gapWallMillis() {
+            return wallMillis - fromWallMillis;
+        }
+
+        static Handover of(JsonNode c) {
+            return new Handover(c.path("robot").asText(), c.path("from").asText(), c.path("to").asText(),
+                    c.path("fromLastWarehouseMs").asLong(), c.path("fromLastWallMillis").asLong(),
+                    c.path("warehouseMs").asLong(), c.path("wallMillis").asLong());
+        }
+    }
 
     long step() {
         return doc.path("step").asLong();
@@ -167,5 +186,48 @@ record WorldSnapshot(JsonNode doc) {
             }
         });
         return over;
+    }
+
+    private JsonNode commandOrigins() {
+        return doc.path("commandOrigins");
+    }
+
+    /** Per robot that took a command, the node that sent it the last one ({@code unknown}: it named none). */
+    Map<String, String> lastCommanders() {
+        Map<String, String> by = new TreeMap<>();
+        commandOrigins().path("robots").fields()
+                .forEachRemaining(e -> by.put(e.getKey(), e.getValue().path("node").asText()));
+        return by;
+    }
+
+    /**
+     * Every hand-over robot-sim kept, oldest first: its bounded log, and per robot the closest one (kept whatever the
+     * log dropped), each once.
+     */
+    List<Handover> handovers() {
+        Map<String, Handover> all = new LinkedHashMap<>();
+        for (JsonNode c : commandOrigins().path("changes")) {
+            Handover h = Handover.of(c);
+            all.put(h.robot() + "@" + h.wallMillis() + ">" + h.to(), h);
+        }
+        commandOrigins().path("robots").fields().forEachRemaining(e -> {
+            JsonNode closest = e.getValue().path("closestHandover");
+            if (closest.isObject()) {
+                Handover h = Handover.of(closest);
+                all.putIfAbsent(h.robot() + "@" + h.wallMillis() + ">" + h.to(), h);
+            }
+        });
+        List<Handover> sorted = new ArrayList<>(all.values());
+        sorted.sort(Comparator.comparingLong(Handover::wallMillis));
+        return sorted;
+    }
+
+    /** Hand-overs in all, per robot's count (the log may have dropped some). */
+    long handoverCount() {
+        long n = 0;
+        for (JsonNode r : commandOrigins().path("robots")) {
+            n += r.path("handovers").asLong();
+        }
+        return n;
     }
 }

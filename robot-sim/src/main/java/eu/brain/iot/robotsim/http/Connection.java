@@ -164,7 +164,7 @@ final class Connection extends ChannelDuplexHandler {
         String uri = request.uri();
         int query = uri.indexOf('?');
         ServerExchange ex = new ServerExchange(ctx, this, request.method(), query < 0 ? uri : uri.substring(0, query), bytes,
-                HttpUtil.isKeepAlive(request), request.protocolVersion());
+                HttpUtil.isKeepAlive(request), request.protocolVersion(), request.headers().get(CommanderHeader.NAME));
         try {
             gate.check(request.method(), request.protocolVersion(), request.headers(), localPort());
             router.route(ex);

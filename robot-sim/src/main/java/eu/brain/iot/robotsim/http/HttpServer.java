@@ -41,7 +41,7 @@ public final class HttpServer implements AutoCloseable {
     /** What the server serves; ids map to indices of the world's robots and doors. */
     public record Wiring(WorldThread world, ViewPublisher views, FaultTable faults, Map<String, Integer> robots,
                          Map<String, Integer> doors, List<String> robotIds, Map<String, Object> index,
-                         long stepMillis, CommandCounter commands) {
+                         long stepMillis, CommandCounter commands, CommandOriginLog origins) {
     }
 
     /**
@@ -69,9 +69,9 @@ public final class HttpServer implements AutoCloseable {
     public static HttpServer start(String bindAddress, int port, int ioThreads, Limits limits, Wiring w)
             throws IOException {
         ToIntFunction<String> robotIndex = id -> w.robots().getOrDefault(id, -1);
-        Router router = new Router(w.robots(), w.doors(), new RobotApi(w.world(), w.views(), w.faults(), w.commands()),
+        Router router = new Router(w.robots(), w.doors(), new RobotApi(w.world(), w.views(), w.faults(), w.commands(), w.origins()),
                 new DoorApi(w.world(), w.views(), w.commands()), new AdminApi(w.world(), w.faults(), w.robotIds(), robotIndex),
-                new WorldApi(w.world(), w.index(), w.stepMillis(), w.commands()));
+                new WorldApi(w.world(), w.index(), w.stepMillis(), w.commands(), w.origins()));
         Set<String> hosts = new HashSet<>(limits.allowedHosts());
         hosts.addAll(List.of("127.0.0.1", "localhost", "[::1]", SimConfig.hostName(bindAddress)));
         RequestGate gate = new RequestGate(hosts);

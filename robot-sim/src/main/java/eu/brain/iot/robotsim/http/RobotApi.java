@@ -28,8 +28,11 @@ final class RobotApi {
     private final ViewPublisher views;
     private final FaultTable faults;
     private final CommandCounter commands;
+    private final CommandOriginLog origins;
 
-    RobotApi(WorldThread world, ViewPublisher views, FaultTable faults, CommandCounter commands) {
+    RobotApi(WorldThread world, ViewPublisher views, FaultTable faults, CommandCounter commands,
+             CommandOriginLog origins) {
+        this.origins = origins;
         this.world = world;
         this.views = views;
         this.faults = faults;
@@ -47,8 +50,15 @@ final class RobotApi {
 
     /** @param rest the path segments after {@code robot_local_control} */
     void handle(ServerExchange ex, int robot, String id, List<String> rest) {
+        String node = CommanderHeader.UNKNOWN;
         if (isCommand(ex, rest)) {
             ex.countAsCommand(commands);
+            try {
+                node = CommanderHeader.node(ex.commander());
+            } catch (ApiException e) {
+                ex.error(e);
+                return;
+            }
         }
         FaultSettings f = faults.effective(robot);
         ex.delay(f.latencyMs());
@@ -86,8 +96,8 @@ final class RobotApi {
         }
         try {
             switch (component.get(1)) {
-                case "add" -> add(ex, robot, id, type);
-                case "cancel" -> cancel(ex, robot, id, type);
+                case "add" -> add(ex, robot, id, type, node);
+                case "cancel" -> cancel(ex, robot, id, type, node);
                 case "query_state" -> query(ex, robot, id, type);
                 default -> Route.notFound(ex);
             }
@@ -105,7 +115,11 @@ final class RobotApi {
         return null;
     }
 
-    private void add(ServerExchange ex, int robot, String id, MissionType type) throws ApiException {
+    /**
+     * @param node the commanding node: recorded when the robot takes the order (on the world thread, after the
+     *             command passed); an order refused changes nothing, its origin included
+     */
+    private void add(ServerExchange ex, int robot, String id, MissionType type, String node) throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.POST)) {
             return;
         }
@@ -115,6 +129,7 @@ final class RobotApi {
             int y = body.requireInt("y");
             Replies.whenDone(ex, world.call(a -> {
                 Mission m = a.commands().goTo(robot, x, y);
+                origins.record(id, node);
                 a.publishRobot(robot);
                 return added(id, type, m);
             }));
@@ -122,6 +137,7 @@ final class RobotApi {
             JsonBody.parse(ex.body(), Set.of());
             Replies.whenDone(ex, world.call(a -> {
                 Mission m = type == MissionType.PICK ? a.commands().pick(robot) : a.commands().place(robot);
+                origins.record(id, node);
                 a.publishRobot(robot);
                 return added(id, type, m);
             }));
@@ -136,13 +152,15 @@ final class RobotApi {
         return doc;
     }
 
-    private void cancel(ServerExchange ex, int robot, String id, MissionType type) throws ApiException {
+    private void cancel(ServerExchange ex, int robot, String id, MissionType type, String node)
+            throws ApiException {
         if (!Route.methodIs(ex, HttpMethod.POST)) {
             return;
         }
         Long missionId = JsonBody.parse(ex.body(), CANCEL_FIELDS).optionalLong("id");
         Replies.whenDone(ex, world.call(a -> {
             List<Mission> cancelled = a.commands().cancel(robot, type, missionId);
+            origins.record(id, node);
             a.publishRobot(robot);
             Map<String, Object> doc = new LinkedHashMap<>();
             doc.put("robot", id);

@@ -31,12 +31,20 @@ final class ServerExchange {
     private final byte[] body;
     private final boolean keepAlive;
     private final HttpVersion version;
+    private final String commander;
     private int delayMs;
     private boolean malformed;
     private CommandCounter commands;
 
     ServerExchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
              boolean keepAlive, HttpVersion version) {
+        this(ctx, connection, method, path, body, keepAlive, version, null);
+    }
+
+    /** @param commander the request's {@value CommanderHeader#NAME} header, null when it had none */
+    ServerExchange(ChannelHandlerContext ctx, Connection connection, HttpMethod method, String path, byte[] body,
+             boolean keepAlive, HttpVersion version, String commander) {
+        this.commander = commander;
         this.ctx = ctx;
         this.connection = connection;
         this.method = method;
@@ -56,6 +64,11 @@ final class ServerExchange {
 
     byte[] body() {
         return body;
+    }
+
+    /** The request's {@value CommanderHeader#NAME} header as sent, null when it had none. */
+    String commander() {
+        return commander;
     }
 
     /** This exchange is a command: its answer (or its drop) is counted. */

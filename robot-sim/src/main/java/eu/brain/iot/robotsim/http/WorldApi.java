@@ -13,9 +13,12 @@ final class WorldApi {
     private final byte[] index;
     private final long stepMillis;
     private final CommandCounter commands;
+    private final CommandOriginLog origins;
 
-    WorldApi(WorldThread world, Map<String, Object> index, long stepMillis, CommandCounter commands) {
+    WorldApi(WorldThread world, Map<String, Object> index, long stepMillis, CommandCounter commands,
+             CommandOriginLog origins) {
         this.commands = commands;
+        this.origins = origins;
         this.world = world;
         this.index = Json.bytes(index);
         this.stepMillis = stepMillis;
@@ -31,7 +34,8 @@ final class WorldApi {
     void handle(ServerExchange ex, List<String> rest) {
         if (rest.isEmpty()) {
             if (Route.methodIs(ex, HttpMethod.GET)) {
-                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.world(a.world(), stepMillis, commands.snapshot()))));
+                Replies.whenDone(ex, world.call(a -> Json.bytes(WorldDocument.world(a.world(), stepMillis, commands.snapshot(),
+                        origins.snapshot()))));
             }
         } else if (rest.size() == 1 && rest.get(0).equals("counters")) {
             if (Route.methodIs(ex, HttpMethod.GET)) {

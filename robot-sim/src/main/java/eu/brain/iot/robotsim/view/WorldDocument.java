@@ -38,8 +38,14 @@ public final class WorldDocument {
     public record DoorCounters(long openings) {
     }
 
-    /** {@code GET /world}: the map, robots, carts, doors and counters. */
+    /** {@code GET /world} without commands' origins (none recorded). */
     public static Map<String, Object> world(World w, long stepMillis, CommandCounts commands) {
+        return world(w, stepMillis, commands, CommandOrigins.NONE);
+    }
+
+    /** {@code GET /world}: the map, robots, carts, doors, counters and which node commanded each robot. */
+    public static Map<String, Object> world(World w, long stepMillis, CommandCounts commands,
+                                            CommandOrigins origins) {
         Map<String, Object> doc = new LinkedHashMap<>();
         doc.put("name", w.map().name());
         doc.put("step", w.step());
@@ -62,6 +68,7 @@ public final class WorldDocument {
         }
         doc.put("doors", doors);
         doc.put("counters", counters(w, stepMillis, commands));
+        doc.put("commandOrigins", origins);
         return doc;
     }
 

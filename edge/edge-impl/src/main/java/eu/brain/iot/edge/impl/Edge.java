@@ -9,6 +9,7 @@ import java.util.concurrent.CompletionStage;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.DeviceOwnership;
 import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceListener;
@@ -19,24 +20,34 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
  * The edge without a framework, put together: one fleet thread; the {@link FleetApi} (the fleet's REST API)
  * shared by polling, mission tracking and commands; the {@link DeviceStore} where every change happens; the
  * {@link EdgeEvents} derived from its changes and the {@link Outbox} they leave by; the {@link FleetPoller}, which
- * only schedules polls; the {@link WorldReader}, which reads the carts and the map from the fleet's world. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
+ * only schedules polls, of the devices this node owns ({@link Ownership}); the {@link WorldReader}, which reads the carts and the map from the fleet's world. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
  * then resource listeners (SSE) and edge events (bus). The DS component wraps it; tests and the benchmark use it
  * directly.
  */
 final class Edge implements DeviceModel, AutoCloseable {
 
-    private final FleetApi api = new FleetApi();
+    private final FleetApi api;
+    private final Ownership ownership;
     private final Outbox outbox;
     private final DeviceStore store;
     private final FleetPoller poller;
     private final WorldReader world;
     private final CommandRunner commands;
 
+    /** An edge on a node without a name ({@value EdgeNode#DEFAULT_NAME}). */
     Edge(FleetSettings settings, EventSink events, EdgeLog log) {
+        this(settings, EdgeNode.DEFAULT_NAME, events, log);
+    }
+
+    /** @param nodeName the node's name, given on every command to the fleet */
+    Edge(FleetSettings settings, String nodeName, EventSink events, EdgeLog log) {
         FleetThread fleet = new FleetThread();
+        this.api = new FleetApi(nodeName);
+        this.ownership = new Ownership(nodeName);
         this.outbox = new Outbox(events, log);
         this.store = new DeviceStore(new EdgeEvents(outbox, new MissionTracker(api, fleet, outbox, log)));
-        this.poller = new FleetPoller(fleet, api, store, outbox, log);
+        this.poller = new FleetPoller(fleet, api, store, outbox, log, ownership);
+        ownership.listener(poller::ownershipChanged);
         this.commands = new CommandRunner(api, store, event -> fleet.run(() -> outbox.publish(event),
                 "publishing " + event.getClass().getSimpleName(), log));
         this.world = new WorldReader(fleet, api, store, log);
@@ -51,6 +62,11 @@ final class Edge implements DeviceModel, AutoCloseable {
 
     FleetSettings settings() {
         return api.settings();
+    }
+
+    /** Which devices this node owns, and their hand-over at run time. */
+    DeviceOwnership ownership() {
+        return ownership;
     }
 
     PollStats.Snapshot pollStats() {

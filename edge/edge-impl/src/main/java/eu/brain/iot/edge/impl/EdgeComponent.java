@@ -3,6 +3,7 @@ package eu.brain.iot.edge.impl;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.CompletionStage;
 
 import org.osgi.framework.BundleContext;
@@ -19,6 +20,7 @@ import org.osgi.service.metatype.annotations.Designate;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.DeviceOwnership;
 import eu.brain.iot.edge.model.api.PollMonitor;
 import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
@@ -39,12 +41,12 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * for its first user and threw it away when that user let go, at every boot: the event bus looks behaviours up
  * before the REST API binds the device model, so the edge started twice and its first poll raced its closing.)
  */
-@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class },
+@Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class, DeviceOwnership.class },
         configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL, immediate = true)
 @SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
         description = "Performs robot and door commands over the fleet's REST API")
 @Designate(ocd = EdgeConfig.class)
-public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, PollMonitor {
+public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, PollMonitor, DeviceOwnership {
 
     private final Edge edge;
     private final Logger log;
@@ -64,8 +66,10 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
         this.log = log;
         this.frameworkFleetUrl = context.getProperty(FLEET_URL_PROPERTY);
         FleetSettings settings = checked(config);
-        this.edge = new Edge(settings, bus::tryDeliver, EdgeLog.of(log));
-        log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis() + " ms");
+        String node = nodeName(context.getProperty(EdgeNode.PROPERTY));
+        this.edge = new Edge(settings, node, bus::tryDeliver, EdgeLog.of(log));
+        log.info("edge of node " + node + " polling the fleet at " + settings.baseUrl() + " every "
+                + settings.periodMillis() + " ms, its share: " + settings.share());
     }
 
     @Modified
@@ -96,6 +100,15 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
             return FleetSettings.from(config, fleetUrl(config, frameworkFleetUrl));
         } catch (IllegalArgumentException e) {
             log.error("configuration " + EdgeConfig.PID + " rejected, the edge does not start: " + e.getMessage());
+            throw e;
+        }
+    }
+
+    private String nodeName(String property) {
+        try {
+            return EdgeNode.name(property);
+        } catch (IllegalArgumentException e) {
+            log.error("the edge does not start: " + e.getMessage());
             throw e;
         }
     }
@@ -139,5 +152,30 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     @Override
     public PollStatistics statistics() {
         return edge.statistics();
+    }
+
+    @Override
+    public String nodeName() {
+        return edge.ownership().nodeName();
+    }
+
+    @Override
+    public Set<String> owned() {
+        return edge.ownership().owned();
+    }
+
+    @Override
+    public boolean owns(String deviceId) {
+        return edge.ownership().owns(deviceId);
+    }
+
+    @Override
+    public Set<String> take(Set<String> deviceIds) {
+        return edge.ownership().take(deviceIds);
+    }
+
+    @Override
+    public Set<String> release(Set<String> deviceIds) {
+        return edge.ownership().release(deviceIds);
     }
 }

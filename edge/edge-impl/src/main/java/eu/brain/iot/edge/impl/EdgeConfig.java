@@ -44,4 +44,12 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     @AttributeDefinition(description = "Time between two reads of the fleet's world (GET /world: where the carts "
             + "stand, the map), as providers cart1.. and warehouse (milliseconds; 0: never)")
     long world_period_ms() default 2_000;
+
+    @AttributeDefinition(description = "This node's share of the fleet's robots and doors, which it polls and "
+            + "commands: 'all'; K/N (the K-th of N nodes: robots whose number modulo N is K-1, the doors when K is "
+            + "doors.owner); or device ids separated by commas. A lease manager may move devices at run time")
+    String share() default Share.ALL;
+
+    @AttributeDefinition(description = "With share K/N: the node number (1..N) that owns the doors")
+    int doors_owner() default 1;
 }

@@ -35,13 +35,24 @@ final class FleetApi implements AutoCloseable {
     }
 
     private final AnswerParser parser = new AnswerParser();
+    private final String nodeName;
     private volatile Link link;
+
+    /** A fleet API of a node without a name ({@value EdgeNode#DEFAULT_NAME}). */
+    FleetApi() {
+        this(EdgeNode.DEFAULT_NAME);
+    }
+
+    /** @param nodeName the node's name, on every command the edge sends */
+    FleetApi(String nodeName) {
+        this.nodeName = nodeName;
+    }
 
     /** New settings: a new client only when the connection settings changed. */
     void configure(FleetSettings next) {
         Link old = link;
         FleetHttpClient client = old != null && next.sameConnection(old.settings()) ? old.client()
-                : new FleetHttpClient(next.ioThreads(), next.maxConnections(), next.timeoutMillis());
+                : new FleetHttpClient(next.ioThreads(), next.maxConnections(), next.timeoutMillis(), nodeName);
         link = new Link(next, client);
         if (old != null && old.client() != client) {
             old.client().close();

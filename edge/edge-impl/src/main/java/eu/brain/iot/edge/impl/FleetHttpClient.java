@@ -44,10 +44,20 @@ final class FleetHttpClient implements AutoCloseable {
 
     private final EventLoopGroup group;
     private final AbstractChannelPoolMap<InetSocketAddress, FixedChannelPool> pools;
+    /** The request header by which the edge names its node on every command: robot-sim records who drove a robot. */
+    static final String NODE_HEADER = "X-Brain-Node";
+
     private final long timeoutMillis;
+    private final String nodeName;
 
     FleetHttpClient(int ioThreads, int maxConnections, long timeoutMillis) {
+        this(ioThreads, maxConnections, timeoutMillis, EdgeNode.DEFAULT_NAME);
+    }
+
+    /** @param nodeName the node's name, sent in {@value #NODE_HEADER} with every command (POST) */
+    FleetHttpClient(int ioThreads, int maxConnections, long timeoutMillis, String nodeName) {
         this.timeoutMillis = timeoutMillis;
+        this.nodeName = nodeName;
         this.group = new NioEventLoopGroup(ioThreads, new DefaultThreadFactory("edge-http", true));
         Bootstrap bootstrap = new Bootstrap().group(group).channel(NioSocketChannel.class)
                 .option(ChannelOption.TCP_NODELAY, true)
@@ -109,7 +119,7 @@ final class FleetHttpClient implements AutoCloseable {
         return answer;
     }
 
-    private static FullHttpRequest request(HttpMethod method, URI uri, byte[] json) {
+    private FullHttpRequest request(HttpMethod method, URI uri, byte[] json) {
         String target = uri.getRawPath() + (uri.getRawQuery() == null ? "" : "?" + uri.getRawQuery());
         FullHttpRequest request = json == null
                 ? new DefaultFullHttpRequest(HttpVersion.HTTP_1_1, method, target, Unpooled.EMPTY_BUFFER)
@@ -118,7 +128,8 @@ final class FleetHttpClient implements AutoCloseable {
                 .set(HttpHeaderNames.ACCEPT, HttpHeaderValues.APPLICATION_JSON)
                 .setInt(HttpHeaderNames.CONTENT_LENGTH, json == null ? 0 : json.length);
         if (json != null) {
-            request.headers().set(HttpHeaderNames.CONTENT_TYPE, HttpHeaderValues.APPLICATION_JSON);
+            request.headers().set(HttpHeaderNames.CONTENT_TYPE, HttpHeaderValues.APPLICATION_JSON)
+                    .set(NODE_HEADER, nodeName);
         }
         return request;
     }

@@ -11,6 +11,7 @@ import java.util.Queue;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.ScheduledFuture;
 import java.util.concurrent.TimeUnit;
+import java.util.function.Function;
 
 /**
  * Schedules the polls of every device of the fleet, once per period, and hands each poll's result to the
@@ -52,6 +53,7 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
     private final DeviceStore store;
     private final Outbox outbox;
     private final EdgeLog log;
+    private final Ownership ownership;
     private final PollStats stats = new PollStats();
 
     // fleet thread only
@@ -62,6 +64,13 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
      * at the old fleet kept for their successor (see {@link #unlist}). Empty outside that transition.
      */
     private final Map<String, PolledDevice> unlisted = new HashMap<>();
+    /**
+     * The fleet's devices as last learnt (configuration or inventory), owned or not, and why one that leaves it is
+     * removed; {@code fleetKnown} false while the inventory of the fleet in force has not answered yet.
+     */
+    private Map<String, DeviceKind> fleetDevices = Map.of();
+    private String fleetRemoval;
+    private boolean fleetKnown;
     private ScheduledFuture<?> discovery;
     private int discoveryFailures;
     /** Polls to send, earliest first. */
@@ -76,7 +85,8 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
     /** Answers of polls, from the HTTP threads, handled at the next tick. */
     private final Queue<Completion> completions = new ConcurrentLinkedQueue<>();
 
-    FleetPoller(FleetThread fleet, FleetApi api, DeviceStore store, Outbox outbox, EdgeLog log) {
+    FleetPoller(FleetThread fleet, FleetApi api, DeviceStore store, Outbox outbox, EdgeLog log, Ownership ownership) {
+        this.ownership = ownership;
         this.fleet = fleet;
         this.api = api;
         this.store = store;
@@ -104,6 +114,8 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
         FleetSettings previous = settings;
         api.configure(next);
         settings = next;
+        ownership.share(next.share());
+        fleetKnown = false;
         cancelDiscovery();
         if (previous != null && !previous.baseUrl().equals(next.baseUrl())) {
             unlist(next); // every device answers elsewhere now, if the new fleet has it
@@ -114,7 +126,7 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
             Map<String, DeviceKind> wanted = new LinkedHashMap<>();
             next.robots().forEach(id -> wanted.put(id, DeviceKind.ROBOT));
             next.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
-            setDevices(wanted, "not in the configuration " + EdgeConfig.PID + " any more (robots, doors)");
+            fleetIs(wanted, "not in the configuration " + EdgeConfig.PID + " any more (robots, doors)");
         }
     }
 
@@ -165,7 +177,7 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
         inventory.doors().forEach(id -> wanted.put(id, DeviceKind.DOOR));
         log.info("fleet at " + asked.baseUrl() + ": " + inventory.robots().size() + " robots, "
                 + inventory.doors().size() + " doors");
-        setDevices(wanted, "not in the fleet at " + asked.baseUrl() + " (GET / lists " + inventory.robots().size()
+        fleetIs(wanted, "not in the fleet at " + asked.baseUrl() + " (GET / lists " + inventory.robots().size()
                 + " robots, " + inventory.doors().size() + " doors)");
     }
 
@@ -189,25 +201,62 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
     }
 
     /**
-     * Polls these devices from now on: the others leave the model (with {@code removal} as the reason), new ones
-     * enter it, unlisted ones ({@link #unlist}) are polled at the new fleet URL, in the model all along.
+     * The fleet has these devices: this node polls those it owns ({@link Ownership}); a device that left the fleet is
+     * removed with {@code removal} as the reason, one this node does not own (any more) as not owned.
      */
-    private void setDevices(Map<String, DeviceKind> wanted, String removal) {
-        List<String> removed = new ArrayList<>();
+    private void fleetIs(Map<String, DeviceKind> wanted, String removal) {
+        fleetDevices = Map.copyOf(wanted);
+        fleetRemoval = removal;
+        fleetKnown = true;
+        ownership.fleet(wanted);
+        setDevices(ownership.ownedOf(wanted), id -> wanted.containsKey(id) ? notOwned() : removal, false);
+    }
+
+    /**
+     * Ownership changed at run time (a device taken or released, on any thread): on the fleet thread, the devices
+     * taken are polled at once, the ones released leave the model. While the fleet's inventory is awaited, its
+     * answer applies the change.
+     */
+    void ownershipChanged() {
+        fleet.run(() -> {
+            if (settings == null || !fleetKnown) {
+                return;
+            }
+            try {
+                setDevices(ownership.ownedOf(fleetDevices),
+                        id -> fleetDevices.containsKey(id) ? notOwned() : fleetRemoval, true);
+            } catch (RuntimeException e) {
+                log.warn("applying a change of ownership failed: " + e);
+            }
+        }, "a change of the devices this node owns", log);
+    }
+
+    private String notOwned() {
+        return "not owned by node " + ownership.nodeName() + " (its share " + ownership.share()
+                + ", less what it released, plus what it took)";
+    }
+
+    /**
+     * Polls these devices from now on: the others leave the model (with {@code removal}'s reason for each), new ones
+     * enter it, unlisted ones ({@link #unlist}) are polled at the new fleet URL, in the model all along.
+     *
+     * @param atOnce poll the new ones now (taken over: a behaviour waits for them); else spread over one period
+     */
+    private void setDevices(Map<String, DeviceKind> wanted, Function<String, String> removal, boolean atOnce) {
+        Map<String, List<String>> removed = new LinkedHashMap<>();
         for (Map<String, PolledDevice> known : List.of(devices, unlisted)) {
             for (PolledDevice d : new ArrayList<>(known.values())) {
                 if (wanted.get(d.id) != d.kind) {
                     known.remove(d.id);
                     d.removed = true; // its entry in the due queue is dropped when it comes up
-                    store.remove(d.id, removal);
-                    removed.add(d.id);
+                    String reason = removal.apply(d.id);
+                    store.remove(d.id, reason);
+                    removed.computeIfAbsent(reason, r -> new ArrayList<>()).add(d.id);
                 }
             }
         }
-        if (!removed.isEmpty()) {
-            log.info(removed.size() + " device(s) removed, " + removal + ": "
-                    + (removed.size() <= 10 ? removed : removed.subList(0, 10) + " and more"));
-        }
+        removed.forEach((reason, ids) -> log.info(ids.size() + " device(s) removed, " + reason + ": "
+                + (ids.size() <= 10 ? ids : ids.subList(0, 10) + " and more")));
         List<PolledDevice> added = new ArrayList<>();
         wanted.forEach((id, kind) -> {
             if (!devices.containsKey(id)) {
@@ -223,11 +272,17 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
                 added.add(d);
             }
         });
-        // Spread the first polls over one period, so that a large fleet is not polled in bursts.
-        long period = TimeUnit.MILLISECONDS.toNanos(settings.periodMillis());
+        // Spread the first polls over one period, so that a large fleet is not polled in bursts; devices taken
+        // over are polled at once (a behaviour waits to hear where they are).
+        long period = atOnce ? 0 : TimeUnit.MILLISECONDS.toNanos(settings.periodMillis());
         long now = System.nanoTime();
         for (int i = 0; i < added.size(); i++) {
             schedule(added.get(i), now + period * i / added.size());
+        }
+        if (atOnce && !added.isEmpty()) {
+            log.info(added.size() + " device(s) taken over by node " + ownership.nodeName() + ", polled now: "
+                    + (added.size() <= 10 ? added.stream().map(d -> d.id).toList()
+                    : added.subList(0, 10).stream().map(d -> d.id).toList() + " and more"));
         }
     }
 

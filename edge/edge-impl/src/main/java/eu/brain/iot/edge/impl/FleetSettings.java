@@ -17,9 +17,12 @@ import java.util.List;
  * @param unreachableAfter failed polls in a row before a device is reported unreachable
  * @param backoffMaxMillis longest time between polls of an unreachable device
  * @param worldPeriodMillis time between two reads of the fleet's world ({@code GET /world}: carts and map), 0: never
+ * @param share            this node's share of the fleet's devices (what it polls and commands, unless ownership
+ *                         changes at run time)
  */
 record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long periodMillis, long timeoutMillis,
-        int maxConnections, int ioThreads, int unreachableAfter, long backoffMaxMillis, long worldPeriodMillis) {
+        int maxConnections, int ioThreads, int unreachableAfter, long backoffMaxMillis, long worldPeriodMillis,
+        Share share) {
 
     FleetSettings {
         robots = List.copyOf(robots);
@@ -44,7 +47,13 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
     static FleetSettings from(EdgeConfig c, String url) {
         FleetSettings s = of(url, List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
                 c.max_connections(), c.io_threads(), c.unreachable_after_failures(), c.backoff_max_ms());
-        return s.withWorldPeriod(c.world_period_ms());
+        return s.withWorldPeriod(c.world_period_ms()).withShare(Share.parse(c.share(), c.doors_owner()));
+    }
+
+    /** The same settings with this share of the fleet. */
+    FleetSettings withShare(Share next) {
+        return new FleetSettings(baseUrl, robots, doors, periodMillis, timeoutMillis, maxConnections, ioThreads,
+                unreachableAfter, backoffMaxMillis, worldPeriodMillis, next);
     }
 
     /**
@@ -57,7 +66,7 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
             throw new IllegalArgumentException("world.period.ms must be 0 (never) or positive, found " + millis);
         }
         return new FleetSettings(baseUrl, robots, doors, periodMillis, timeoutMillis, maxConnections, ioThreads,
-                unreachableAfter, backoffMaxMillis, millis);
+                unreachableAfter, backoffMaxMillis, millis, share);
     }
 
     /** @throws IllegalArgumentException naming the configuration property at fault */
@@ -74,7 +83,7 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
                     + ") must be at least poll.period.ms (" + periodMillis + ")");
         }
         return new FleetSettings(base, ids("robots", robots), ids("doors", doors), periodMillis, timeoutMillis,
-                maxConnections, ioThreads, unreachableAfter, backoffMaxMillis, 0);
+                maxConnections, ioThreads, unreachableAfter, backoffMaxMillis, 0, Share.EVERY_DEVICE);
     }
 
     private static URI baseUrl(String url) {

@@ -7,9 +7,11 @@
  * what the edge reads from the fleet's world (kind {@code cart}: providers {@code cart1}, ... with {@code position.x},
  * {@code position.y}, {@code cart.carriedBy}; kind {@code warehouse}: provider {@code warehouse} with
  * {@code map.name}, {@code map.width}, {@code map.height}, {@code map.rows}, the grid's rows joined by a newline).
+ * Since 1.2, which devices this node owns, and their hand-over between nodes
+ * ({@link eu.brain.iot.edge.model.api.DeviceOwnership}).
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package eu.brain.iot.edge.model.api;
 
 import org.osgi.annotation.bundle.Export;
