@@ -62,6 +62,16 @@ final class Downloads {
             Files.createDirectories(folder);
             Path target = Files.createTempFile(folder, r.symbolicName() + "-", ".jar");
             file = reader.download(r.url(), target, limit, transfer);
+        } catch (UrlReader.TooLong e) {
+            if (r.size() < 0) {
+                throw new InstallException(Problem.DOWNLOAD_FAILED, "cannot download " + r + needed(behaviour, r) + ": "
+                        + withUrl(e.getMessage(), r) + " (bundle.max.bytes). Nothing was installed", e);
+            }
+            throw new InstallException(Problem.HASH_MISMATCH, r + " from " + r.url() + " does not match its index "
+                    + r.repository() + needed(behaviour, r) + ": " + withUrl(e.getMessage(), r) + ", the index says "
+                    + r.size() + " bytes of SHA-256 " + r.sha256() + ". Nothing was installed. The file was changed"
+                    + " after the index was made: restore the file, or rebuild and re-sign the index if the change is"
+                    + " wanted", e);
         } catch (IOException e) {
             throw new InstallException(Problem.DOWNLOAD_FAILED, "cannot download " + r + needed(behaviour, r) + ": "
                     + withUrl(Errors.describe(e), r) + ". Nothing was installed; check that the repository "

@@ -83,7 +83,7 @@ final class BoundedBody<T> implements HttpResponse.BodySubscriber<T> {
             for (ByteBuffer buffer : buffers) {
                 long total = received + buffer.remaining();
                 if (total > maxBytes) {
-                    abort(new IOException(uri + " is longer than the " + maxBytes + " bytes allowed (more than "
+                    abort(new UrlReader.TooLong(uri + " is longer than the " + maxBytes + " bytes allowed (more than "
                             + maxBytes + " bytes sent); refused"));
                     return;
                 }

@@ -181,8 +181,10 @@ public final class Repositories {
             int failures = h.status.failures() + 1;
             next = Math.min(retryMaxMillis, retryInitialMillis << Math.min(20, failures - 1));
             String problem = Errors.describe(e);
-            String message = (problem.contains(h.url.toString()) ? problem : h.url + " cannot be read (" + problem
-                    + ")") + "; retry " + failures + " in " + next
+            String prefix = h.url + ": ";
+            String message = (problem.startsWith(prefix) ? h.url + " cannot be read (" + problem.substring(
+                    prefix.length()) + ")" : problem.contains(h.url.toString()) ? problem : h.url + " cannot be read ("
+                            + problem + ")") + "; retry " + failures + " in " + next
                     + " ms" + (h.snapshot == null ? "" : ", the index read before stays in use");
             if (failures == 1 || Long.bitCount(failures) == 1) {
                 warn.accept(message); // 1st, 2nd, 4th, 8th... failure: visible without flooding the log

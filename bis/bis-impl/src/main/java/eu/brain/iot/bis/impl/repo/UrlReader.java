@@ -54,6 +54,15 @@ public final class UrlReader {
                 .build();
     }
 
+    /** A body longer than allowed: refused, and nothing of it kept. */
+    public static final class TooLong extends IOException {
+        private static final long serialVersionUID = 1L;
+
+        TooLong(String message) {
+            super(message);
+        }
+    }
+
     /** A bundle read into a file: where, how long, its SHA-256 (lower-case hex). */
     public record Downloaded(Path file, long size, String sha256) {
     }
@@ -111,7 +120,7 @@ public final class UrlReader {
             Path path = Path.of(uri);
             long size = size(path);
             if (size > maxBytes) {
-                throw new IOException(uri + " is " + size + " bytes, more than the " + maxBytes + " allowed; refused");
+                throw new TooLong(uri + " is " + size + " bytes, more than the " + maxBytes + " allowed; refused");
             }
             try (InputStream in = Files.newInputStream(path); OutputStream out = Files.newOutputStream(target)) {
                 MessageDigest digest = sha256();
@@ -120,7 +129,7 @@ public final class UrlReader {
                 for (int n; (n = in.read(buffer)) >= 0;) {
                     total += n;
                     if (total > maxBytes) {
-                        throw new IOException(uri + " grew beyond the " + maxBytes + " bytes allowed; refused");
+                        throw new TooLong(uri + " grew beyond the " + maxBytes + " bytes allowed; refused");
                     }
                     digest.update(buffer, 0, n);
                     out.write(buffer, 0, n);
@@ -183,6 +192,9 @@ public final class UrlReader {
             throw e;
         } catch (ExecutionException e) {
             Throwable cause = e.getCause();
+            if (cause instanceof TooLong tooLong) {
+                throw new TooLong(tooLong.getMessage());
+            }
             String message = Errors.describe(cause);
             throw new IOException(message.contains(uri.toString()) ? message : uri + ": " + message, cause);
         }
@@ -223,12 +235,12 @@ public final class UrlReader {
     private static byte[] read(Path path, long maxBytes) throws IOException {
         long size = size(path);
         if (size > maxBytes) {
-            throw new IOException(path + " is " + size + " bytes, more than the " + maxBytes + " allowed; refused");
+            throw new TooLong(path + " is " + size + " bytes, more than the " + maxBytes + " allowed; refused");
         }
         try (InputStream in = Files.newInputStream(path)) {
             byte[] bytes = in.readNBytes((int) Math.min(Integer.MAX_VALUE - 8, maxBytes + 1));
             if (bytes.length > maxBytes) {
-                throw new IOException(path + " grew beyond the " + maxBytes + " bytes allowed; refused");
+                throw new TooLong(path + " grew beyond the " + maxBytes + " bytes allowed; refused");
             }
             return bytes;
         }
