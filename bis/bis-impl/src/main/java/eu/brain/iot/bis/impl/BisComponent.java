@@ -77,7 +77,7 @@ public final class BisComponent {
     /** What a running installer consists of. */
     private record Parts(Repositories repositories, Installer installer, ScheduledExecutorService scheduler,
             ExecutorService callbacks, ServiceTracker<EventBusStatistics, EventBusStatistics> statistics,
-            long shellWaitMillis) {
+            long shellWaitMillis, AutoCloseable journalLock) {
     }
 
     @Activate
@@ -100,7 +100,14 @@ public final class BisComponent {
         List<URI> urls = repositoryUrls(config.repositories());
         Path journalDir = journalDir(context, config);
         Journal journal = new Journal(journalDir);
-        Journal.State loaded = journal.load(); // a broken journal stops here, before any thread starts
+        AutoCloseable journalLock = journal.lock(); // another installer on this journal stops this one here
+        Journal.State loaded;
+        try {
+            loaded = journal.load(); // a broken journal stops here, before any thread starts
+        } catch (IOException e) {
+            release(journalLock);
+            throw e;
+        }
         UrlReader reader = new UrlReader(Duration.ofMillis(Math.max(100, config.download_timeout_ms())),
                 Duration.ofMillis(Math.max(100, config.download_deadline_ms())));
         ScheduledExecutorService scheduler = Executors.newScheduledThreadPool(Math.max(1, urls.size()),
@@ -132,7 +139,7 @@ public final class BisComponent {
                     + " hashes still are)");
         }
         Parts parts = new Parts(repositories, installer, scheduler, callbacks, statistics,
-                Math.max(1, config.shell_wait_ms()));
+                Math.max(1, config.shell_wait_ms()), journalLock);
         repositories.onChange(installer::retryPending);
         repositories.start();
         long restoreTimeout = Math.max(0, config.restore_timeout_ms());
@@ -212,6 +219,15 @@ public final class BisComponent {
             parts.scheduler().shutdownNow();
             parts.callbacks().shutdownNow();
             parts.statistics().close();
+            release(parts.journalLock());
+        }
+    }
+
+    private void release(AutoCloseable lock) {
+        try {
+            lock.close();
+        } catch (Exception e) {
+            log.warn("Bundle Installer: could not release the journal's lock: {}", String.valueOf(e));
         }
     }
 

@@ -129,6 +129,43 @@ public final class Journal {
         }
     }
 
+    /**
+     * Locks the journal's folder for this installer (an exclusive lock on {@code journal.lock}, released by the
+     * returned handle or when the process ends): two installers writing one journal would lose entries.
+     *
+     * @throws IOException saying which process holds it, when another does
+     */
+    public AutoCloseable lock() throws IOException {
+        Files.createDirectories(directory);
+        Path lockFile = directory.resolve("journal.lock");
+        java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(lockFile, StandardOpenOption.CREATE,
+                StandardOpenOption.READ, StandardOpenOption.WRITE);
+        java.nio.channels.FileLock lock;
+        try {
+            lock = channel.tryLock();
+        } catch (java.nio.channels.OverlappingFileLockException e) {
+            lock = null;
+        }
+        if (lock == null) {
+            String holder = new String(Files.readAllBytes(lockFile), StandardCharsets.UTF_8).trim();
+            channel.close();
+            throw new IOException("the journal folder " + directory + " is in use by another Bundle Installer ("
+                    + (holder.isEmpty() ? "process unknown" : holder) + "): each node needs a state folder of its own;"
+                    + " start this node with --state=DIR or --name=NAME, or set journal.dir of eu.brain.iot.bis");
+        }
+        channel.truncate(0);
+        channel.write(java.nio.ByteBuffer.wrap(("process " + ProcessHandle.current().pid() + "\n")
+                .getBytes(StandardCharsets.UTF_8)), 0);
+        java.nio.channels.FileLock held = lock;
+        return () -> {
+            try {
+                held.release();
+            } finally {
+                channel.close();
+            }
+        };
+    }
+
     /** Appends a line for people: time, what, which behaviour, why. */
     public void history(String what, String symbolicName, String version, String why) throws IOException {
         Files.createDirectories(directory);
