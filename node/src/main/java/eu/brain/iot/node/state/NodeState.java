@@ -6,6 +6,7 @@ import java.util.Dictionary;
 import java.util.Hashtable;
 import java.util.concurrent.Callable;
 
+import org.osgi.annotation.bundle.Capability;
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -21,6 +22,9 @@ import org.osgi.service.component.annotations.Deactivate;
  * <p>
  * Threads: activated and deactivated by SCR, one at a time; {@link #lock} is written at activation only.
  */
+// The StateHeld service is registered from code (only once the lock is held), so DS cannot declare it: declare it here,
+// so that the node's resolver sees that this bundle provides what ReadyReporter requires.
+@Capability(namespace = "osgi.service", attribute = "objectClass:List<String>=\"eu.brain.iot.node.state.StateHeld\"")
 @Component(immediate = true)
 public final class NodeState {
 

@@ -46,7 +46,6 @@ public final class Repositories {
     private final Consumer<String> info;
     private final long maxIndexBytes;
     private final CountDownLatch firstAttempts;
-    private final CountDownLatch loaded;
     private volatile boolean closed;
     private volatile Runnable onChange = () -> { };
 
@@ -68,7 +67,6 @@ public final class Repositories {
         this.info = info;
         urls.forEach(u -> holders.add(new Holder(u)));
         this.firstAttempts = new CountDownLatch(holders.size());
-        this.loaded = new CountDownLatch(holders.size());
     }
 
     /** @param listener called on the reader's thread after an index's content in use was replaced */
@@ -87,11 +85,6 @@ public final class Repositories {
     /** Waits until every index was tried once (read or failed), at most {@code millis}. */
     public boolean awaitFirstAttempts(long millis) throws InterruptedException {
         return firstAttempts.await(millis, TimeUnit.MILLISECONDS);
-    }
-
-    /** Waits until every index has been read successfully once, at most {@code millis}. */
-    public boolean awaitLoaded(long millis) throws InterruptedException {
-        return loaded.await(millis, TimeUnit.MILLISECONDS);
     }
 
     /** @return the behaviour and library resources of every index in use, in configuration order */
@@ -244,16 +237,12 @@ public final class Repositories {
             }
             throw e;
         }
-        boolean first = h.snapshot == null;
         h.validators = content.validators();
         h.refusedDigest = null;
         h.snapshot = snapshot;
         h.readAt = now;
         info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
         h.publish(signature, 0, null, now);
-        if (first) {
-            loaded.countDown(); // after the snapshot is in place: a waiting journal restore reads it at once
-        }
         onChange.run();
     }
 
