@@ -65,6 +65,8 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 public final class BisComponent {
 
     public static final String PID = "eu.brain.iot.bis";
+    /** How often the start's restore looks whether the indexes it waits for offer the journal's behaviours. */
+    private static final long RESTORE_POLL_MS = 100;
 
     private final Logger log;
     /** Null when the configuration is unusable: then nothing runs and the log says why. */
@@ -160,7 +162,12 @@ public final class BisComponent {
         long deadline = System.currentTimeMillis() + restoreTimeoutMillis;
         try {
             if (!parts.installer().pending().isEmpty()) {
-                parts.repositories().awaitFirstAttempts(restoreTimeoutMillis);
+                // every index tried once, or every entry offered already: a slow index holds up no restore it is not
+                // needed for
+                while (!parts.repositories().awaitFirstAttempts(RESTORE_POLL_MS) && !parts.installer().pendingOffered()
+                        && System.currentTimeMillis() < deadline) {
+                    // look again
+                }
                 long left = deadline - System.currentTimeMillis();
                 if (parts.installer().restore().timeout(Math.max(1, left)).getFailure() != null) {
                     log.warn("Bundle Installer: the journal's behaviours are not all back after {} ms; offering the"

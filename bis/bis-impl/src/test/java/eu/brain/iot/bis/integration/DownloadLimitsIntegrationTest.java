@@ -58,6 +58,32 @@ class DownloadLimitsIntegrationTest extends BisTestBase {
     }
 
     @Test
+    void anIndexThatNeverAnswersDoesNotHoldBackTheJournalsRestore() throws Exception {
+        BundleInstaller installer = configure(settings());
+        awaitOffered(installer, DOOR_CLOSED);
+        value(installer.install(byType(DOOR_CLOSED)));
+        unconfigure();
+        for (String name : List.of(DOOR, TestRepository.EVENTS, TestRepository.EDGE_API,
+                TestRepository.EDGE_MODEL_API)) {
+            bundle(name).uninstall(); // as a node restart's cache wipe would
+        }
+        try (TestHttpServer server = new TestHttpServer(repo.dir)) {
+            server.misbehave("/silent.xml", Behaviour.SILENT);
+            var settings = settings();
+            settings.put("repositories", new String[] { server.url("/silent.xml"), repo.index.toUri().toString() });
+            settings.put("download.timeout.ms", 20_000L);
+            settings.put("restore.timeout.ms", 30_000L);
+
+            long started = System.nanoTime();
+            BundleInstaller restarted = configure(settings);
+
+            assertThat(Duration.ofNanos(System.nanoTime() - started)).isLessThan(Duration.ofSeconds(10));
+            assertThat(restarted.installed()).extracting(b -> b.symbolicName).containsExactly(DOOR);
+            assertThat(bundle(DOOR)).isNotNull();
+        }
+    }
+
+    @Test
     void aTricklingBundleHoldsUpOnlyItsOwnInstallAndTheShellSaysWhatItWaitsFor() throws Exception {
         try (TestHttpServer server = new TestHttpServer(repo.dir)) {
             String doorJar = "/" + repo.jar("behaviour-door").getFileName();

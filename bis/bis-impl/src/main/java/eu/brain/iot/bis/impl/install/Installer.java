@@ -312,6 +312,13 @@ public final class Installer implements BundleInstaller {
         return ledger.pending();
     }
 
+    /** Whether an index in use offers every journal entry not back yet, in its version. */
+    public boolean pendingOffered() {
+        List<BehaviourResource> offered = repositories.resources();
+        return ledger.pending().stream().allMatch(r -> offered.stream().anyMatch(o -> o.symbolicName()
+                .equals(r.symbolicName()) && o.version().toString().equals(r.version())));
+    }
+
     /** @see JournalRestore#restore() */
     public Promise<Void> restore() {
         return journalRestore.restore();

@@ -111,7 +111,11 @@ public final class Repositories {
         return all;
     }
 
-    /** @return the facts of a resource of one of the indexes, if it is one */
+    /**
+     * @return the facts of a resource of one of the indexes, if it is one: the same resource object, or, when its
+     *         index was read anew since the resource was found (a resolution in progress), the resource of the same
+     *         identity and version in the index now in use
+     */
     public Optional<BehaviourResource> facts(org.osgi.resource.Resource resource) {
         for (Holder h : holders) {
             IndexSnapshot snapshot = h.snapshot;
@@ -120,7 +124,9 @@ public final class Repositories {
                 return Optional.of(facts);
             }
         }
-        return Optional.empty();
+        Optional<BehaviourResource> identity = BehaviourResource.of(resource, java.net.URI.create("unknown:"));
+        return identity.flatMap(wanted -> resources().stream().filter(r -> r.symbolicName().equals(wanted
+                .symbolicName()) && r.version().equals(wanted.version())).findFirst());
     }
 
     public List<IndexStatus> status() {
@@ -227,6 +233,16 @@ public final class Repositories {
             }
             signature = "valid (key " + keys.describe(key) + ")";
         }
+        if (h.snapshot != null && digest.equals(h.digest)) {
+            // the same bytes again (a touched file, a server that ignores conditional requests): the snapshot in use
+            // stays, so that a resolution in progress keeps finding its resources; the journal's entries not back
+            // are tried again all the same (their bundles may have been repaired)
+            h.validators = content.validators();
+            h.readAt = now;
+            h.publish(signature, 0, null, now);
+            onChange.run();
+            return;
+        }
         IndexSnapshot snapshot;
         try {
             snapshot = new IndexSnapshot(h.url, IndexParser.parse(content.bytes(), h.url, maxIndexBytes));
@@ -239,6 +255,7 @@ public final class Repositories {
         }
         h.validators = content.validators();
         h.refusedDigest = null;
+        h.digest = digest;
         h.snapshot = snapshot;
         h.readAt = now;
         info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
@@ -263,6 +280,8 @@ public final class Repositories {
         volatile IndexStatus status;
         Fetch.Validators validators = Fetch.Validators.NONE;
         String refusedDigest;
+        /** The SHA-256 of the index's bytes in use. */
+        String digest;
         String signature = "-";
         long readAt;
         boolean attempted;
