@@ -8,6 +8,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.attribute.PosixFilePermissions;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
 import org.junit.jupiter.api.Test;
@@ -40,7 +41,7 @@ class FabricNodeScriptTest {
                 printf '[INFO] BUILD SUCCESS\\n\\033[0m\\033[0m'
                 """);
         Result result = run("--rebuild", "--check", "-Dfelix.fileinstall.dir=" + configDir,
-                "-Dorg.osgi.service.http.port=" + NodeProcess.freePort());
+                "--http-port=" + NodeProcess.freePort(), "--state=" + configDir.resolve("state"));
         assertThat(result.code).as(result.output).isZero();
         assertThat(result.output).doesNotContain(ESC);
         List<String> lines = result.output.lines().toList();
@@ -66,6 +67,51 @@ class FabricNodeScriptTest {
                 .doesNotContain("fabric node ready");
     }
 
+    @Test
+    void onATerminalTheBuildsStatusLineNamesNoModuleBeforeMavenNamesOne() throws Exception {
+        fakeMaven(0, """
+                printf '[INFO] Scanning for projects...\\n'
+                printf '[INFO] Downloaded from central: https://repo.maven.apache.org/x.pom (2 kB at 9 kB/s)\\n'
+                printf '[INFO] Building BRAIN-IoT fabric: event bus 0.1.0-SNAPSHOT [1/2]\\n'
+                printf '[INFO] BUILD SUCCESS\\n'
+                """);
+        String command = String.join(" ", "bash", SCRIPT.toString(), "--rebuild", "--check",
+                "-Dfelix.fileinstall.dir=" + configDir, "--http-port=" + NodeProcess.freePort(),
+                "--state=" + configDir.resolve("state"));
+        Result result = run(List.of("script", "-qefc", command, "/dev/null"), Map.of()); // a terminal: the status line
+
+        assertThat(result.code).as(result.output).isZero();
+        assertThat(result.output).contains("fabric-node: reading the project, 1 file downloaded")
+                .contains("fabric-node: module 1/2: event bus, 1 file downloaded")
+                .doesNotContain("module 0/?").doesNotContain("module /").doesNotContain(": ,");
+    }
+
+    @Test
+    void theDefaultStateFolderIsTheNodesNameAndCheckoutUnderXdgStateHome() throws Exception {
+        fakeMaven(0, "");
+        Path xdg = configDir.resolve("xdg");
+        String checkout = SCRIPT.getParent().toString();
+        String hash = java.util.HexFormat.of().formatHex(java.security.MessageDigest.getInstance("SHA-256")
+                .digest(checkout.getBytes(StandardCharsets.UTF_8)), 0, 4);
+
+        Result result = run(List.of("bash", SCRIPT.toString(), "--check", "--name=alpha",
+                "-Dfelix.fileinstall.dir=" + configDir, "--http-port=" + NodeProcess.freePort()),
+                Map.of("XDG_STATE_HOME", xdg.toString()));
+
+        assertThat(result.code).as(result.output).isZero();
+        assertThat(xdg.resolve("brain-iot").resolve("alpha-" + hash).resolve("node.lock")).exists();
+    }
+
+    @Test
+    void aBadNameOrPortIsRefusedByTheScript() throws Exception {
+        Result name = run(List.of("bash", SCRIPT.toString(), "--name=../x"), Map.of());
+        assertThat(name.code).isEqualTo(2);
+        assertThat(name.output).contains("--name needs letters, digits");
+        Result port = run(List.of("bash", SCRIPT.toString(), "--http-port=99999"), Map.of());
+        assertThat(port.code).isEqualTo(2);
+        assertThat(port.output).contains("--http-port needs a port 1..65535, found '99999'");
+    }
+
     private void fakeMaven(int exitCode, String body) throws IOException {
         Path mvn = bin.resolve("mvn");
         Files.writeString(mvn, "#!/bin/sh\n" + body + "exit " + exitCode + "\n");
@@ -78,9 +124,14 @@ class FabricNodeScriptTest {
     private Result run(String... args) throws Exception {
         List<String> command = new java.util.ArrayList<>(List.of("bash", SCRIPT.toString()));
         command.addAll(List.of(args));
+        return run(command, Map.of());
+    }
+
+    private Result run(List<String> command, Map<String, String> environment) throws Exception {
         ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true)
                 .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
         builder.environment().put("PATH", bin + ":" + System.getenv("PATH"));
+        builder.environment().putAll(environment);
         Process process = builder.start();
         byte[] output = process.getInputStream().readAllBytes();
         if (!process.waitFor(NodeProcess.DEADLINE.toSeconds(), TimeUnit.SECONDS)) {

@@ -39,7 +39,11 @@ final class NodeProcess implements AutoCloseable {
         reader.start();
     }
 
-    /** Starts {@code java <systemProperties> -jar target/fabric-node.jar}; each argument is a {@code -Dname=value}. */
+    /**
+     * Starts {@code java <systemProperties> -jar target/fabric-node.jar}; each argument is a {@code -Dname=value}.
+     * Unless one names it, the node gets a fresh state folder of its own ({@code -Dfabric.node.state}): the tests'
+     * nodes never share one, nor use the folder of a node the developer runs.
+     */
     static NodeProcess start(String... systemProperties) throws IOException {
         if (!Files.isRegularFile(JAR)) {
             throw new IllegalStateException(JAR.toAbsolutePath() + " is missing: the smoke test runs after "
@@ -48,6 +52,9 @@ final class NodeProcess implements AutoCloseable {
         List<String> command = new ArrayList<>();
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.addAll(List.of(systemProperties));
+        if (command.stream().noneMatch(a -> a.startsWith("-Dfabric.node.state="))) {
+            command.add("-Dfabric.node.state=" + Files.createTempDirectory("fabric-node-state"));
+        }
         command.add("-jar");
         command.add(JAR.toString());
         return new NodeProcess(new ProcessBuilder(command).redirectErrorStream(true).start());

@@ -73,6 +73,9 @@ final class FabricNode implements AutoCloseable {
         command.add(Path.of(System.getProperty("java.home"), "bin", "java").toString());
         command.add("-Dfelix.fileinstall.dir=" + configDir);
         command.add("-Dfabric.node.root=" + root);
+        // a state folder of the run's own: the node locks it, and a node the user runs from this checkout holds the
+        // checkout's default one
+        command.add("-Dfabric.node.state=" + configDir.toAbsolutePath().getParent().resolve("state"));
         command.add("-Dorg.osgi.service.http.port=" + httpPort);
         command.add("-Dorg.apache.felix.http.host=127.0.0.1");
         command.add("-jar");

@@ -29,6 +29,7 @@ import org.osgi.service.component.annotations.ReferenceCardinality;
 import org.osgi.service.component.annotations.ReferencePolicy;
 
 import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.node.state.StateHeld;
 
 /**
  * Prints the node's "ready" line, with the time since the JVM started, as soon as the event bus is registered
@@ -114,8 +115,12 @@ public final class ReadyReporter {
     /** A check run's deadline (its own daemon thread), {@code null} otherwise. */
     private final ScheduledExecutorService deadline;
 
+    /**
+     * @param state the node's state folder, locked for it: without it (another node holds the folder) the node says
+     *        why and ends, and this component never runs
+     */
     @Activate
-    public ReadyReporter(BundleContext context) throws InvalidSyntaxException {
+    public ReadyReporter(BundleContext context, @Reference StateHeld state) throws InvalidSyntaxException {
         this.context = context;
         this.readyServices = ReadyService.parse(context.getProperty(READY_SERVICES));
         if (!readyServices.isEmpty()) {
@@ -355,8 +360,9 @@ public final class ReadyReporter {
         Bundle[] bundles = context.getBundles();
         // The levels above the core's (the core was looked at for the ready line) up to the shell's, at which
         // File Install also starts the bundles dropped in the config folder.
-        List<String> problems = BundleHealth.problems(bundles, BundleHealth.startLevel(context.getBundle()) + 1,
-                level);
+        List<String> problems = new java.util.ArrayList<>(BundleHealth.problems(bundles,
+                BundleHealth.startLevel(context.getBundle()) + 1, level));
+        problems.addAll(HttpHealth.problems(context, bundles));
         if (problems.isEmpty()) {
             Census census = Census.of(bundles, level);
             System.out.println(ReadyLines.upLine(sinceJvmStart, level, census, dashboardLink(bundles)

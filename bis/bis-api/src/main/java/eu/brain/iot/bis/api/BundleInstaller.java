@@ -50,4 +50,13 @@ public interface BundleInstaller {
 
     /** @return the behaviours this installer installed and that are still installed, oldest first */
     List<InstalledBehaviour> installed();
+
+    /**
+     * What the installer is doing now, for people: one line per piece of work under way, each naming the behaviour
+     * and, for a download, its URL and progress (e.g. {@code downloading eu.brain.iot.door 1.0.0 from
+     * http://host/door.jar: 1200 of 45000 bytes after 12 s}). Empty when it is idle, or when it does not tell.
+     */
+    default List<String> activities() {
+        return List.of();
+    }
 }

@@ -27,7 +27,12 @@ public class InstallException extends Exception {
         /** The behaviour is not installed by this installer. */
         NOT_INSTALLED,
         /** The installer is stopping. */
-        CLOSED
+        CLOSED,
+        /**
+         * The journal could not be written (a full disk, a read-only folder): the change was not made, or was undone,
+         * so that a restart finds what the installer says.
+         */
+        JOURNAL_FAILED
     }
 
     private final Problem problem;

@@ -3,7 +3,6 @@ package eu.brain.iot.bis.impl;
 import java.time.Instant;
 import java.util.List;
 import java.util.Map;
-import java.util.concurrent.TimeUnit;
 
 import org.osgi.util.promise.Promise;
 import org.osgi.util.promise.TimeoutException;
@@ -25,14 +24,15 @@ import eu.brain.iot.bis.impl.repo.Repositories;
  */
 public final class BisCommands {
 
-    private static final long WAIT_SECONDS = 120;
-
     private final Installer installer;
     private final Repositories repositories;
+    /** How long a command waits for the installer's answer before it says what the installer is doing. */
+    private final long waitMillis;
 
-    BisCommands(Installer installer, Repositories repositories) {
+    BisCommands(Installer installer, Repositories repositories, long waitMillis) {
         this.installer = installer;
         this.repositories = repositories;
+        this.waitMillis = waitMillis;
     }
 
     /** bis:list: the behaviours installed by the installer, when and why; the operator's removals. */
@@ -83,11 +83,28 @@ public final class BisCommands {
         return await(installer.install(request), "installed");
     }
 
-    /** bis:uninstall NAME: uninstalls a behaviour; it is not installed again automatically until allowed. */
+    /**
+     * bis:uninstall NAME: uninstalls a behaviour; it is not installed again automatically until allowed. A name that
+     * is neither installed, nor in the journal, nor offered by an index is answered as such, and nothing changes.
+     */
     public String uninstall(String symbolicName) {
-        return await(installer.uninstall(symbolicName, "bis:uninstall by an operator", true), "uninstalled")
-                + "\nnot installed again automatically until 'bis:allow " + symbolicName + "' or 'bis:install "
-                + symbolicName + "'";
+        boolean installed = installer.installed().stream().anyMatch(b -> b.symbolicName.equals(symbolicName))
+                || installer.pending().stream().anyMatch(p -> p.symbolicName().equals(symbolicName));
+        if (!installed) {
+            boolean offered = repositories.resources().stream().anyMatch(r -> r.symbolicName().equals(symbolicName));
+            List<String> known = installer.known();
+            String what = "nothing is installed under the name " + symbolicName + " (installed: "
+                    + (known.isEmpty() ? "none" : String.join(", ", known)) + ")";
+            if (!offered) {
+                return what + "; no index offers it either: nothing done";
+            }
+            String answer = await(installer.uninstall(symbolicName, "bis:uninstall by an operator", true), "removed");
+            return !answer.startsWith("removed") ? answer : what + "; an index offers it: it is not installed"
+                    + " automatically until 'bis:allow " + symbolicName + "' or 'bis:install " + symbolicName + "'";
+        }
+        String answer = await(installer.uninstall(symbolicName, "bis:uninstall by an operator", true), "uninstalled");
+        return answer.startsWith("uninstalled") ? answer + "\nnot installed again automatically until 'bis:allow "
+                + symbolicName + "' or 'bis:install " + symbolicName + "'" : answer;
     }
 
     /**
@@ -95,17 +112,20 @@ public final class BisCommands {
      * Management Service undoes with the next event the behaviour consumes, it stays stopped until allowed.
      */
     public String stop(String symbolicName) {
-        return await(installer.stop(symbolicName, "bis:stop by an operator"), "stopped")
-                + "\nnot started again automatically until 'bis:allow " + symbolicName + "' (the next event it consumes"
-                + " then starts it) or 'bis:install " + symbolicName + "' (starts it at once)";
+        String answer = await(installer.stop(symbolicName, "bis:stop by an operator"), "stopped");
+        return answer.startsWith("stopped") ? answer + "\nnot started again automatically until 'bis:allow "
+                + symbolicName + "' (the next event it consumes then starts it) or 'bis:install " + symbolicName
+                + "' (starts it at once)" : answer;
     }
 
     /** bis:allow NAME: lifts an operator's removal or stop. */
     public String allow(String symbolicName) {
-        boolean blocked = installer.blocked().containsKey(symbolicName);
-        installer.allow(symbolicName);
-        return blocked ? symbolicName + " may be installed automatically again"
-                : symbolicName + " was not removed by an operator: nothing to allow";
+        try {
+            return installer.allowOrFail(symbolicName) ? symbolicName + " may be installed automatically again"
+                    : symbolicName + " was not removed by an operator: nothing to allow";
+        } catch (InstallException e) {
+            return "failed (" + e.problem() + "): " + e.getMessage();
+        }
     }
 
     /** bis:repos: the indexes, when read, their signature state, and the behaviours they offer. */
@@ -143,17 +163,20 @@ public final class BisCommands {
                 .filter(t -> t.endsWith("." + type)).findFirst().orElse(type);
     }
 
-    private static String await(Promise<InstalledBehaviour> promise, String verb) {
+    private String await(Promise<InstalledBehaviour> promise, String verb) {
         try {
-            Throwable failure = promise.timeout(TimeUnit.SECONDS.toMillis(WAIT_SECONDS)).getFailure();
+            Throwable failure = promise.timeout(waitMillis).getFailure();
             if (failure instanceof InstallException e) {
                 return "failed (" + e.problem() + "): " + e.getMessage();
             }
             if (failure instanceof TimeoutException) {
-                return "still running after " + WAIT_SECONDS + " s; 'bis:list' shows when it is done";
+                List<String> doing = installer.activities();
+                return "no answer yet after " + waitMillis / 1000 + " s (shell.wait.ms); the installer goes on"
+                        + (doing.isEmpty() ? "" : ", it is " + String.join("; ", doing))
+                        + ". 'bis:list' shows when it is done";
             }
             if (failure != null) {
-                return "failed: " + failure;
+                return "failed: " + eu.brain.iot.bis.impl.repo.Errors.describe(failure);
             }
             InstalledBehaviour b = promise.getValue();
             return verb + " " + b.symbolicName + " " + (b.version == null ? "" : b.version)
@@ -162,7 +185,7 @@ public final class BisCommands {
             Thread.currentThread().interrupt();
             return "interrupted";
         } catch (java.lang.reflect.InvocationTargetException e) {
-            return "failed: " + e.getCause();
+            return "failed: " + eu.brain.iot.bis.impl.repo.Errors.describe(e.getCause());
         }
     }
 }

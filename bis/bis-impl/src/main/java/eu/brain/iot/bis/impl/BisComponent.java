@@ -1,5 +1,6 @@
 package eu.brain.iot.bis.impl;
 
+import java.io.File;
 import java.io.IOException;
 import java.net.URI;
 import java.nio.file.Path;
@@ -11,7 +12,10 @@ import java.util.List;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.LinkedBlockingQueue;
 import java.util.concurrent.ThreadFactory;
+import java.util.concurrent.ThreadPoolExecutor;
+import java.util.concurrent.TimeUnit;
 
 import org.osgi.annotation.bundle.Capability;
 import org.osgi.framework.BundleContext;
@@ -42,7 +46,8 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
  * whoever waits for the service (the BMS, the node's ready line) sees the journal's behaviours back. A configuration
  * change restarts it (the journal keeps what is installed; installed bundles stay).
  * <p>
- * Threads: the installer's thread ({@code brain-iot-bis}) runs installs; {@code brain-iot-bis-repos} reads indexes;
+ * Threads: the installer's thread ({@code brain-iot-bis}) resolves, installs and starts; {@code brain-iot-bis-download}
+ * threads download bundles (a few at once); {@code brain-iot-bis-repos} threads read indexes (one per index);
  * {@code brain-iot-bis-callbacks} runs promise callbacks; {@code brain-iot-bis-start} restores the journal and
  * registers the services. {@link #registrations}, {@link #closed} and {@link #starter} are guarded by
  * {@code this}.
@@ -60,6 +65,8 @@ import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 public final class BisComponent {
 
     public static final String PID = "eu.brain.iot.bis";
+    /** How often the start's restore looks whether the indexes it waits for offer the journal's behaviours. */
+    private static final long RESTORE_POLL_MS = 100;
 
     private final Logger log;
     /** Null when the configuration is unusable: then nothing runs and the log says why. */
@@ -71,7 +78,8 @@ public final class BisComponent {
 
     /** What a running installer consists of. */
     private record Parts(Repositories repositories, Installer installer, ScheduledExecutorService scheduler,
-            ExecutorService callbacks, ServiceTracker<EventBusStatistics, EventBusStatistics> statistics) {
+            ExecutorService callbacks, ServiceTracker<EventBusStatistics, EventBusStatistics> statistics,
+            long shellWaitMillis, AutoCloseable journalLock) {
     }
 
     @Activate
@@ -91,27 +99,38 @@ public final class BisComponent {
 
     private Parts start(BundleContext context, BisConfig config, Resolver resolver) throws IOException {
         TrustedKeys keys = TrustedKeys.of(config.trusted_keys());
-        List<URI> urls = new ArrayList<>();
-        for (String url : config.repositories()) {
-            if (url != null && !url.isBlank()) {
-                urls.add(parse(url.trim()));
-            }
-        }
+        List<URI> urls = repositoryUrls(config.repositories());
         Path journalDir = journalDir(context, config);
         Journal journal = new Journal(journalDir);
-        Journal.State loaded = journal.load(); // a broken journal stops here, before any thread starts
-        UrlReader reader = new UrlReader(Duration.ofMillis(Math.max(100, config.download_timeout_ms())));
-        ScheduledExecutorService scheduler = Executors.newSingleThreadScheduledExecutor(named("brain-iot-bis-repos"));
+        AutoCloseable journalLock = journal.lock(); // another installer on this journal stops this one here
+        Journal.State loaded;
+        try {
+            loaded = journal.load(); // a broken journal stops here, before any thread starts
+        } catch (IOException e) {
+            release(journalLock);
+            throw e;
+        }
+        UrlReader reader = new UrlReader(Duration.ofMillis(Math.max(100, config.download_timeout_ms())),
+                Duration.ofMillis(Math.max(100, config.download_deadline_ms())));
+        ScheduledExecutorService scheduler = Executors.newScheduledThreadPool(Math.max(1, urls.size()),
+                named("brain-iot-bis-repos"));
         ExecutorService callbacks = Executors.newSingleThreadExecutor(named("brain-iot-bis-callbacks"));
         Repositories repositories = new Repositories(urls, keys, reader, scheduler, config.refresh_ms(),
-                config.retry_initial_ms(), config.retry_max_ms(), log::warn, log::info);
+                config.retry_initial_ms(), config.retry_max_ms(), config.index_max_bytes(), log::warn, log::info);
         ServiceTracker<EventBusStatistics, EventBusStatistics> statistics = new ServiceTracker<>(context,
                 EventBusStatistics.class, null);
         statistics.open();
+        int downloadThreads = Math.max(1, config.download_threads());
+        ThreadPoolExecutor downloader = new ThreadPoolExecutor(downloadThreads, downloadThreads, 30, TimeUnit.SECONDS,
+                new LinkedBlockingQueue<>(), named("brain-iot-bis-download"));
+        downloader.allowCoreThreadTimeOut(true);
+        File data = context.getDataFile("downloads");
+        Path downloads = data != null ? data.toPath() : journalDir.resolve("downloads");
         Installer installer = Installer.create(context, resolver, repositories, reader, journal, loaded,
                 Arrays.asList(config.prefer()), Math.max(1, config.activation_timeout_ms()), statistics::getService,
-                Executors.newSingleThreadExecutor(named("brain-iot-bis")), new PromiseFactory(callbacks, scheduler),
-                log::error, log::warn, log::info);
+                new Installer.Threads(Executors.newSingleThreadExecutor(named("brain-iot-bis")), downloader,
+                        new PromiseFactory(callbacks, scheduler)),
+                downloads, Math.max(1, config.bundle_max_bytes()), log::error, log::warn, log::info);
         log.info("Bundle Installer: indexes {}, {} trusted keys, journal {}", urls, keys.keys().size(), journalDir);
         if (urls.isEmpty()) {
             log.warn("Bundle Installer: no repositories configured (repositories of {}): nothing can be installed",
@@ -121,7 +140,8 @@ public final class BisComponent {
             log.warn("Bundle Installer: no trusted.keys configured: index signatures are not checked (bundle"
                     + " hashes still are)");
         }
-        Parts parts = new Parts(repositories, installer, scheduler, callbacks, statistics);
+        Parts parts = new Parts(repositories, installer, scheduler, callbacks, statistics,
+                Math.max(1, config.shell_wait_ms()), journalLock);
         repositories.onChange(installer::retryPending);
         repositories.start();
         long restoreTimeout = Math.max(0, config.restore_timeout_ms());
@@ -134,16 +154,28 @@ public final class BisComponent {
         return parts;
     }
 
-    /** Waits for the indexes' first reads, restores the journal, then offers the service and the commands. */
+    /**
+     * Waits until every index was tried once (read, refused or unreachable: an index that was refused will not offer
+     * the journal's behaviours by waiting longer), restores the journal, then offers the service and the commands.
+     */
     private void restoreThenRegister(BundleContext context, Parts parts, long restoreTimeoutMillis) {
         long deadline = System.currentTimeMillis() + restoreTimeoutMillis;
         try {
             if (!parts.installer().pending().isEmpty()) {
-                parts.repositories().awaitLoaded(restoreTimeoutMillis);
+                // every index tried once, or every entry offered already: a slow index holds up no restore it is not
+                // needed for
+                while (!parts.repositories().awaitFirstAttempts(RESTORE_POLL_MS) && !parts.installer().pendingOffered()
+                        && System.currentTimeMillis() < deadline) {
+                    // look again
+                }
                 long left = deadline - System.currentTimeMillis();
                 if (parts.installer().restore().timeout(Math.max(1, left)).getFailure() != null) {
                     log.warn("Bundle Installer: the journal's behaviours are not all back after {} ms; offering the"
                             + " service anyway, the restore goes on", restoreTimeoutMillis);
+                } else if (!parts.installer().pending().isEmpty()) {
+                    log.warn("Bundle Installer: offering the service without {} of the journal's behaviours, which"
+                            + " cannot be installed now (see above, or 'bis:list'); tried again when an index changes",
+                            parts.installer().pending().size());
                 }
             }
         } catch (InterruptedException e) {
@@ -165,7 +197,8 @@ public final class BisComponent {
             props.put("osgi.command.scope", "bis");
             props.put("osgi.command.function", new String[] { "list", "install", "uninstall", "stop", "allow", "repos" });
             registrations.add(context.registerService(BisCommands.class,
-                    new BisCommands(parts.installer(), parts.repositories()), props));
+                    new BisCommands(parts.installer(), parts.repositories(),
+                    parts.shellWaitMillis()), props));
         } catch (IllegalStateException e) {
             // the bundle is stopping: nothing to offer
         }
@@ -193,6 +226,15 @@ public final class BisComponent {
             parts.scheduler().shutdownNow();
             parts.callbacks().shutdownNow();
             parts.statistics().close();
+            release(parts.journalLock());
+        }
+    }
+
+    private void release(AutoCloseable lock) {
+        try {
+            lock.close();
+        } catch (Exception e) {
+            log.warn("Bundle Installer: could not release the journal's lock: {}", String.valueOf(e));
         }
     }
 
@@ -209,13 +251,27 @@ public final class BisComponent {
         }
     }
 
+    /** Each configured value may hold several URLs separated by commas (a .cfg file's one string). */
+    static List<URI> repositoryUrls(String[] configured) {
+        List<URI> urls = new ArrayList<>();
+        for (String value : configured) {
+            if (value == null) {
+                continue;
+            }
+            for (String url : value.split(",")) {
+                if (!url.isBlank()) {
+                    urls.add(parse(url.trim()));
+                }
+            }
+        }
+        return urls;
+    }
+
     private static Path journalDir(BundleContext context, BisConfig config) {
         if (!config.journal_dir().isBlank()) {
             return Path.of(config.journal_dir());
         }
-        String node = context.getProperty("fabric.node.name");
-        return Path.of(System.getProperty("user.home"), ".local", "state", "brain-iot",
-                node == null || node.isBlank() ? "node" : node);
+        return StateFolder.of(context::getProperty, System::getenv).resolve("bis");
     }
 
     private static ThreadFactory named(String name) {

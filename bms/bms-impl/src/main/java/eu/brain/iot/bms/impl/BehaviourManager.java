@@ -405,14 +405,28 @@ final class BehaviourManager {
             TypeState state = e.getValue();
             boolean working = state instanceof Searching || state instanceof Installing;
             if (working && now >= state.since() + settings.installDeadlineMs()) {
-                giveUp(e.getKey(), state, state instanceof Installing i ? i.behaviour() : null, null,
-                        "no answer from the installer");
+                String behaviour = state instanceof Installing i ? i.behaviour() : null;
+                giveUp(e.getKey(), state, behaviour, null, noAnswer(behaviour));
             } else if (state instanceof Installed i && now >= i.graceUntil() && !heldNow.containsKey(e.getKey())) {
                 forget(e.getKey(), state); // handed over; a later unhandled event starts afresh anyway
             } else if (state instanceof Resting r && now >= r.until() && !heldNow.containsKey(e.getKey())) {
                 forget(e.getKey(), state);
             }
         }
+    }
+
+    /** "no answer from the installer", and what the installer says it is doing (for that behaviour, if it says). */
+    private String noAnswer(String behaviour) {
+        List<String> doing;
+        try {
+            doing = installer.activities();
+        } catch (RuntimeException e) {
+            doing = List.of();
+        }
+        String name = behaviour == null ? null : behaviour.split(" ", 2)[0];
+        List<String> mine = name == null ? List.of() : doing.stream().filter(a -> a.contains(name)).toList();
+        List<String> told = mine.isEmpty() ? doing : mine;
+        return "no answer from the installer" + (told.isEmpty() ? "" : "; it is " + String.join("; ", told));
     }
 
     private void graceEnded(String eventType, Installed installed) {

@@ -187,6 +187,25 @@ class BehaviourManagerTest {
     }
 
     @Test
+    void anInstallThatNeverAnswersIsGivenUpNamingWhatTheInstallerIsDoing() {
+        installer.activities = List.of("downloading " + DOOR + " 0.1.0 from http://127.0.0.1:9/door.jar: 12 of 4000"
+                + " bytes after 9 s", "downloading other.Behaviour 1.0.0 from http://127.0.0.1:9/other.jar: 0 bytes"
+                        + " after 1 s");
+        bus.publish(bms, DOOR_EVENT);
+        clock.runDue();
+        assertThat(installer.requests).hasSize(1); // and it never answers
+
+        clock.advance(SETTINGS.installDeadlineMs() + SETTINGS.retryMaxMs());
+
+        assertThat(bus.discards).singleElement().asString().contains("no answer from the installer")
+                .contains("downloading " + DOOR + " 0.1.0 from http://127.0.0.1:9/door.jar: 12 of 4000 bytes")
+                .doesNotContain("other.Behaviour");
+        assertThat(alerts.of(BehaviourInstallFailed.class)).singleElement().extracting(a -> a.reason).asString()
+                .contains("no answer from the installer; it is downloading " + DOOR + " 0.1.0 from"
+                        + " http://127.0.0.1:9/door.jar");
+    }
+
+    @Test
     void pastTheDeadlineHeldEventsAreDiscardedWithTheReasonAndTheTypeRests() {
         bus.publish(bms, DOOR_EVENT);
         bus.publish(bms, DOOR_EVENT);

@@ -50,6 +50,8 @@ final class FakeInstaller implements BundleInstaller {
     boolean remote;
     /** When set, every install request fails at once with it. */
     volatile InstallException failEveryInstall;
+    /** What the installer says it is doing. */
+    volatile List<String> activities = List.of();
 
     void offer(String type, String symbolicName, String version) {
         BehaviourCandidate c = new BehaviourCandidate();
@@ -103,5 +105,10 @@ final class FakeInstaller implements BundleInstaller {
     @Override
     public List<InstalledBehaviour> installed() {
         return List.copyOf(active);
+    }
+
+    @Override
+    public List<String> activities() {
+        return activities;
     }
 }

@@ -95,6 +95,7 @@ final class Node implements AutoCloseable {
                 "-Dgosh.args=" + (shell ? "" : "--nointeractive"), "-Dfabric.node.root=" + ROOT,
                 "-Dfelix.fileinstall.dir=" + home.resolve("config"),
                 "-Dorg.osgi.framework.storage=" + home.resolve("felix-cache"),
+                "-Dfabric.node.state=" + home.resolve("state"),
                 "-Dorg.osgi.service.http.port=" + port, "-jar", JAR.toString()));
         synchronized (output) {
             output.setLength(0);

@@ -24,7 +24,6 @@ import eu.brain.iot.bis.api.InstallException.Problem;
 import eu.brain.iot.bis.api.InstallRequest;
 import eu.brain.iot.bis.api.InstalledBehaviour;
 import eu.brain.iot.bis.impl.journal.BehaviourRecord;
-import eu.brain.iot.bis.impl.journal.BundleFact;
 import eu.brain.iot.bis.impl.journal.Journal;
 import eu.brain.iot.bis.impl.repo.BehaviourResource;
 import eu.brain.iot.bis.impl.repo.Repositories;
@@ -32,14 +31,18 @@ import eu.brain.iot.bis.impl.repo.UrlReader;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 
 /**
- * The local {@link BundleInstaller}. Requests are answered at once with a promise; installs, uninstalls and
- * allowances run one at a time on the installer's single thread ({@code executor}), so that each transaction sees
- * the framework as the previous one left it. Requests for a behaviour already being installed get that install's
- * promise.
+ * The local {@link BundleInstaller}. Requests are answered at once with a promise. What changes the framework
+ * (resolving, installing, starting, uninstalling) runs one step at a time on the installer's single thread
+ * ({@code executor}), so that each step sees the framework as the previous one left it; downloads run apart, on the
+ * download threads ({@code downloader}), one install's at a time per thread: an install resolves, hands its downloads
+ * over and leaves the installer's thread free, and comes back to it to install what arrived (resolving again, in case
+ * another install changed the framework meanwhile). So a slow download holds up its own install only. Requests for a
+ * behaviour already being installed get that install's promise.
  * <p>
- * Threads: {@link #inflight} and {@link #closed} are guarded by {@code this}; the {@link Ledger} guards itself;
- * everything else is touched only on the installer's thread. Promise callbacks run on the promise factory's
- * callback executor, never on the installer's thread.
+ * Threads: {@link #inflight} and {@link #closed} are guarded by {@code this}; the {@link Ledger} guards itself; a
+ * {@link Job}'s files are a concurrent map handed between the installer's thread and one download thread at a time;
+ * everything else is touched only on the installer's thread. Promise callbacks run on the promise factory's callback
+ * executor, never on the installer's thread.
  */
 public final class Installer implements BundleInstaller {
 
@@ -53,28 +56,38 @@ public final class Installer implements BundleInstaller {
     private final PromiseFactory promises;
     private final Consumer<String> warn;
     private final Consumer<String> info;
-    private final Map<String, Promise<InstalledBehaviour>> inflight = new HashMap<>();
-    /** Why a journal entry is not back: written on the installer's thread, read by Gogo. */
-    private final Map<String, String> restoreProblems = new java.util.concurrent.ConcurrentHashMap<>();
+    private final Downloads downloads;
+    private final ExecutorService downloader;
+    private final Map<String, Job> inflight = new HashMap<>();
     private boolean closed;
-    /** Set on the installer's thread once the start's restore ran; read by the index reader's thread. */
-    private volatile boolean restored;
+    private final JournalRestore journalRestore;
+    private final Pipeline pipeline;
 
-    /** @param loaded what the journal held at start */
+
+    /** What an install needs besides the framework: where and how it downloads, on which threads it runs. */
+    public record Threads(ExecutorService executor, ExecutorService downloader, PromiseFactory promises) {
+    }
+
+    /**
+     * @param loaded what the journal held at start
+     * @param downloadFolder where downloads are kept until installed (the bundle's data area)
+     * @param bundleMaxBytes the largest bundle read when its index states no size
+     */
     public static Installer create(BundleContext context, Resolver resolver, Repositories repositories,
             UrlReader reader, Journal journal, Journal.State loaded, List<String> prefer, long activationTimeoutMillis,
-            Supplier<EventBusStatistics> statistics, ExecutorService executor, PromiseFactory promises,
-            Consumer<String> error, Consumer<String> warn, Consumer<String> info) {
+            Supplier<EventBusStatistics> statistics, Threads threads, java.nio.file.Path downloadFolder,
+            long bundleMaxBytes, Consumer<String> error, Consumer<String> warn, Consumer<String> info) {
         Ledger ledger = new Ledger(journal, loaded, error);
         Activation activation = new Activation(context, statistics);
-        Transaction transaction = new Transaction(context, resolver, repositories, reader, activation,
+        Transaction transaction = new Transaction(context, resolver, repositories, activation,
                 activationTimeoutMillis, warn);
         return new Installer(context, repositories, new ChoicePolicy(prefer), ledger, transaction,
-                new Restarter(context, activation, activationTimeoutMillis, info), executor, promises, warn, info);
+                new Restarter(context, activation, activationTimeoutMillis, info),
+                new Downloads(reader, downloadFolder, bundleMaxBytes), threads, warn, info);
     }
 
     private Installer(BundleContext context, Repositories repositories, ChoicePolicy policy, Ledger ledger,
-            Transaction transaction, Restarter restarter, ExecutorService executor, PromiseFactory promises,
+            Transaction transaction, Restarter restarter, Downloads downloads, Threads threads,
             Consumer<String> warn, Consumer<String> info) {
         this.context = context;
         this.repositories = repositories;
@@ -82,10 +95,17 @@ public final class Installer implements BundleInstaller {
         this.ledger = ledger;
         this.transaction = transaction;
         this.restarter = restarter;
-        this.executor = executor;
-        this.promises = promises;
+        this.downloads = downloads;
+        this.executor = threads.executor();
+        this.downloader = threads.downloader();
+        this.promises = threads.promises();
         this.warn = warn;
         this.info = info;
+        this.pipeline = new Pipeline(context, ledger, transaction, restarter, downloads, executor, downloader,
+                this::finished, this::dto, warn, info);
+        this.journalRestore = new JournalRestore(context, ledger, restarter, policy, repositories, executor,
+                promises, (chosen, reason, installedAt) -> start(new Job(chosen, reason, installedAt, false,
+                        promises.deferred()), pipeline::proceed), this::indexes, warn, info);
     }
 
     @Override
@@ -127,24 +147,43 @@ public final class Installer implements BundleInstaller {
         }
         BehaviourResource chosen = allowed.get(0);
         String reason = request.reason == null || request.reason.isBlank() ? "requested" : request.reason;
+        return start(new Job(chosen, reason, System.currentTimeMillis(), request.operator, promises.deferred()),
+                pipeline::runInstall);
+    }
+
+    /** Starts a job on the installer's thread, or answers with the running job of that behaviour. */
+    private Promise<InstalledBehaviour> start(Job job, Consumer<Job> first) {
         synchronized (this) {
             if (closed) {
                 return failed(Problem.CLOSED, "the Bundle Installer is stopping");
             }
-            Promise<InstalledBehaviour> running = inflight.get(chosen.symbolicName());
+            Job running = inflight.get(job.chosen.symbolicName());
             if (running != null) {
-                return running;
+                return running.deferred.getPromise();
             }
-            Deferred<InstalledBehaviour> deferred = promises.deferred();
-            inflight.put(chosen.symbolicName(), deferred.getPromise());
+            inflight.put(job.chosen.symbolicName(), job);
             try {
-                executor.execute(() -> runInstall(chosen, reason, request.operator, deferred));
+                executor.execute(() -> first.accept(job));
             } catch (RejectedExecutionException e) {
-                inflight.remove(chosen.symbolicName());
+                inflight.remove(job.chosen.symbolicName());
                 return failed(Problem.CLOSED, "the Bundle Installer is stopping");
             }
-            return deferred.getPromise();
+            return job.deferred.getPromise();
         }
+    }
+
+    @Override
+    public List<String> activities() {
+        List<String> lines = new ArrayList<>(downloads.activities());
+        synchronized (this) {
+            for (Job job : inflight.values()) {
+                String name = job.chosen.toString();
+                if (lines.stream().noneMatch(l -> l.contains(name))) {
+                    lines.add("installing " + name + " (resolving, installing or starting; " + job.reason + ")");
+                }
+            }
+        }
+        return lines;
     }
 
     @Override
@@ -164,7 +203,8 @@ public final class Installer implements BundleInstaller {
                     Problem.NOT_INSTALLED, symbolicName + " is not installed by the Bundle Installer ('bis:list' shows"
                             + " what is)"));
             // blocked before its bundle stops: the BMS, which sees it stop, asks for it and is refused
-            ledger.block(symbolicName, "stopped-by-operator", reason);
+            journaled(() -> ledger.block(symbolicName, "stopped-by-operator", reason), symbolicName + " was not"
+                    + " stopped");
             Bundle own = context.getBundle(record.own().location());
             try {
                 if (own != null) {
@@ -212,7 +252,44 @@ public final class Installer implements BundleInstaller {
 
     @Override
     public void allow(String symbolicName) {
-        ledger.allow(symbolicName, "allowed by an operator");
+        try {
+            allowOrFail(symbolicName);
+        } catch (InstallException e) {
+            warn.accept(e.getMessage());
+        }
+    }
+
+    /**
+     * Lifts an operator's removal, saying when the journal could not record it.
+     *
+     * @return whether it was removed by an operator
+     */
+    public boolean allowOrFail(String symbolicName) throws InstallException {
+        boolean[] was = new boolean[1];
+        journaled(() -> was[0] = ledger.allow(symbolicName, "allowed by an operator"), symbolicName
+                + " is still not installed automatically");
+        return was[0];
+    }
+
+    /** A journal change; a journal that cannot be written fails the step, saying what was not done. */
+    interface JournalChange {
+        void run() throws java.io.IOException;
+    }
+
+    static void journaled(JournalChange change, String consequence) throws InstallException {
+        try {
+            change.run();
+        } catch (java.io.IOException e) {
+            throw new InstallException(Problem.JOURNAL_FAILED, e.getMessage() + "; " + consequence, e);
+        }
+    }
+
+    /** @return the names of the behaviours installed and of those the journal lists that are not back yet */
+    public List<String> known() {
+        List<String> names = new ArrayList<>();
+        ledger.behaviours().forEach(b -> names.add(b.symbolicName()));
+        ledger.pending().forEach(b -> names.add(b.symbolicName() + " (journal, not back yet)"));
+        return names;
     }
 
     @Override
@@ -227,7 +304,7 @@ public final class Installer implements BundleInstaller {
 
     /** @return why a journal entry could not be installed again, or null */
     public String restoreProblem(String symbolicName) {
-        return restoreProblems.get(symbolicName);
+        return journalRestore.problem(symbolicName);
     }
 
     /** Journal entries not installed again (yet) since the start. */
@@ -235,53 +312,21 @@ public final class Installer implements BundleInstaller {
         return ledger.pending();
     }
 
-    /**
-     * Installs again, re-verified, what the journal lists; a behaviour whose bundles are all still in the framework
-     * (the installer restarted, not the node) is taken back and started if stopped. Runs on the installer's thread.
-     */
+    /** Whether an index in use offers every journal entry not back yet, in its version. */
+    public boolean pendingOffered() {
+        List<BehaviourResource> offered = repositories.resources();
+        return ledger.pending().stream().allMatch(r -> offered.stream().anyMatch(o -> o.symbolicName()
+                .equals(r.symbolicName()) && o.version().toString().equals(r.version())));
+    }
+
+    /** @see JournalRestore#restore() */
     public Promise<Void> restore() {
-        Deferred<Void> done = promises.deferred();
-        executor.execute(() -> {
-            restorePending();
-            restored = true;
-            done.resolve(null);
-        });
-        return done.getPromise();
+        return journalRestore.restore();
     }
 
-    /**
-     * Tries the journal entries that are not back again (called when an index was read anew: the version they need
-     * may be offered now, or an unreachable repository answered). Does nothing before {@link #restore()} ran.
-     */
+    /** @see JournalRestore#retryPending() */
     public void retryPending() {
-        if (restored && !ledger.pending().isEmpty()) {
-            try {
-                executor.execute(this::restorePending);
-            } catch (RejectedExecutionException e) {
-                // stopping
-            }
-        }
-    }
-
-    private void restorePending() {
-        for (BehaviourRecord r : ledger.pending()) {
-            try {
-                restore(r);
-                restoreProblems.remove(r.symbolicName());
-            } catch (InstallException e) {
-                if (!e.getMessage().equals(restoreProblems.put(r.symbolicName(), e.getMessage()))) {
-                    warn.accept("the journal lists " + r.symbolicName() + " " + r.version() + " (installed because: "
-                            + r.reason() + "), which could not be installed again: " + e.getMessage()
-                            + "; it stays in the journal and is tried again when an index changes and at the next"
-                            + " start");
-                }
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
-            } catch (RuntimeException e) {
-                warn.accept("restoring " + r.symbolicName() + " from the journal failed: " + e);
-            }
-        }
+        journalRestore.retryPending();
     }
 
     public void close() {
@@ -289,167 +334,53 @@ public final class Installer implements BundleInstaller {
             closed = true;
         }
         executor.shutdownNow();
-    }
-
-    private void restore(BehaviourRecord r) throws InstallException, InterruptedException {
-        List<Bundle> present = new ArrayList<>();
-        for (BundleFact f : r.bundles()) {
-            Bundle b = context.getBundle(f.location());
-            if (b != null && b.getState() != Bundle.UNINSTALLED) {
-                present.add(b);
-            }
-        }
-        boolean blocked = ledger.isBlocked(r.symbolicName());
-        if (present.size() == r.bundles().size()) {
-            ledger.adopt(r);
-            if (blocked) { // stopped by an operator: it stays stopped
-                info.accept("journal: " + r.symbolicName() + " " + r.version() + " is still installed, taken back;"
-                        + " not started, an operator stopped it");
-                return;
-            }
-            String was = Restarter.stateForPeople(present.get(0));
-            if (restarter.ensureActive(r, present.get(0))) {
-                ledger.restarted(r, "started again when the installer took it back from its journal (its bundle was "
-                        + was + ")", System.currentTimeMillis());
-            }
-            info.accept("journal: " + r.symbolicName() + " " + r.version() + " is still installed, taken back");
-            return;
-        }
-        if (blocked) {
-            throw new InstallException(Problem.REMOVED_BY_OPERATOR, "an operator stopped it ("
-                    + ledger.blocked().get(r.symbolicName()) + "); 'bis:install " + r.symbolicName()
-                    + "' installs and starts it again");
-        }
-        List<BehaviourResource> offered = policy.byName(repositories.resources(), r.symbolicName(),
-                "[" + r.version() + "," + r.version() + "]");
-        if (offered.isEmpty()) {
-            throw new InstallException(Problem.NOT_FOUND, "no index in use offers " + r.symbolicName() + " "
-                    + r.version() + " now (indexes: " + indexes() + ")");
-        }
-        BehaviourRecord installed = installNew(offered.get(0), "journal: " + r.reason(), r.installedAt());
-        info.accept("journal: " + installed.symbolicName() + " " + installed.version() + " installed again");
-    }
-
-    private void runInstall(BehaviourResource chosen, String reason, boolean operator,
-            Deferred<InstalledBehaviour> deferred) {
-        try {
-            if (operator) {
-                ledger.allow(chosen.symbolicName(), "installed by an operator");
-            }
-            BehaviourRecord record = ledger.get(chosen.symbolicName()).orElse(null);
-            if (record != null) {
-                Bundle own = context.getBundle(record.own().location());
-                if (own != null && own.getState() != Bundle.UNINSTALLED) {
-                    String was = Restarter.stateForPeople(own);
-                    if (restarter.ensureActive(record, own)) {
-                        ledger.restarted(record, "started again (its bundle was " + was + "): " + reason,
-                                System.currentTimeMillis());
-                    }
-                    done(chosen, deferred, record);
-                    return;
-                }
-                warn.accept(record.symbolicName() + " was uninstalled behind the installer's back; installing it"
-                        + " again");
-                removeBundles(record);
-                ledger.remove(record.symbolicName(), "vanished", "its bundle was uninstalled by someone else");
-                reason = "installed again (its bundle had been uninstalled by someone else, not with bis:uninstall): "
-                        + reason;
-            }
-            for (Bundle b : context.getBundles()) {
-                if (chosen.symbolicName().equals(b.getSymbolicName())) {
-                    throw new InstallException(Problem.START_FAILED, chosen.symbolicName() + " " + b.getVersion()
-                            + " is already in the framework (bundle " + b.getBundleId() + ", " + b.getLocation()
-                            + ") but was not installed by the Bundle Installer: start it with 'start " + b.getBundleId()
-                            + "', or uninstall it and let the installer manage it");
-                }
-            }
-            done(chosen, deferred, installNew(chosen, reason, System.currentTimeMillis()));
-        } catch (InstallException e) {
-            warn.accept("install of " + chosen + " failed: " + e.getMessage());
-            fail(chosen, deferred, e);
-        } catch (InterruptedException e) {
-            fail(chosen, deferred, new InstallException(Problem.CLOSED, "the Bundle Installer stopped during the"
-                    + " install of " + chosen));
-        } catch (RuntimeException e) {
-            warn.accept("install of " + chosen + " failed unexpectedly: " + e);
-            fail(chosen, deferred, new InstallException(Problem.START_FAILED, "install of " + chosen
-                    + " failed unexpectedly: " + e, e));
-        }
-    }
-
-    private BehaviourRecord installNew(BehaviourResource chosen, String reason, long installedAt)
-            throws InstallException, InterruptedException {
-        Transaction.Result result = transaction.run(chosen);
-        List<BundleFact> facts = new ArrayList<>();
-        for (Transaction.Installed i : result.installed()) {
-            BundleFact fact = new BundleFact(i.facts().symbolicName(), i.facts().version().toString(),
-                    i.facts().sha256(), i.bundle().getLocation());
-            if (i.bundle() == result.own()) {
-                facts.add(0, fact);
-            } else {
-                facts.add(fact);
-            }
-        }
-        for (Bundle b : result.reused()) {
-            ledger.bundle(b.getLocation()).filter(f -> !facts.contains(f)).ifPresent(facts::add);
-        }
-        BehaviourRecord record = new BehaviourRecord(chosen.symbolicName(), chosen.version().toString(),
-                chosen.consumed(), chosen.repository().toString(), installedAt, reason, facts);
-        ledger.put(record, "installed");
-        info.accept("installed " + chosen + " from " + chosen.repository() + " with " + (facts.size() - 1)
-                + " dependencies (" + reason + ")");
-        return record;
+        downloader.shutdownNow();
     }
 
     private InstalledBehaviour runUninstall(String symbolicName, String reason, boolean byOperator)
             throws InstallException, InterruptedException {
         BehaviourRecord record = ledger.get(symbolicName).orElse(null);
-        if (byOperator) {
-            ledger.block(symbolicName, "removed-by-operator", reason == null ? "removed by an operator" : reason);
-        }
+        String why = reason == null ? "removed by an operator" : reason;
         if (record == null) {
-            if (byOperator) {
+            BehaviourRecord entry = ledger.pendingEntry(symbolicName).orElse(null);
+            if (entry != null || byOperator) {
+                // a journal entry not back yet is forgotten; an operator's removal of one not installed keeps it out
+                journaled(() -> {
+                    if (byOperator) {
+                        ledger.block(symbolicName, "removed-by-operator", why);
+                    }
+                    if (entry != null) {
+                        ledger.remove(symbolicName, "forgotten", why);
+                    }
+                }, symbolicName + " was not removed");
                 return notInstalled(symbolicName);
             }
-            throw new InstallException(Problem.NOT_INSTALLED, symbolicName + " is not installed by the Bundle"
-                    + " Installer ('bis:list' shows what is)");
+            throw new InstallException(Problem.NOT_INSTALLED, "nothing is installed under the name " + symbolicName
+                    + " (installed: " + (known().isEmpty() ? "none" : String.join(", ", known()))
+                    + "; 'bis:list' shows them)");
         }
         InstalledBehaviour dto = dto(record);
         // off the list first: whoever sees its bundle's UNINSTALLED event and then asks installed() (the BMS, which
         // brings back a behaviour uninstalled outside the installer) finds it gone by the installer's own hand.
-        // removeBundles counts the other users of each bundle, which this removal does not change.
-        ledger.remove(symbolicName, byOperator ? "uninstalled-by-operator" : "uninstalled", reason);
-        removeBundles(record);
+        // removeBundles counts the other users of each bundle, which this removal does not change. The journal
+        // first: when it cannot be written, nothing is uninstalled.
+        journaled(() -> {
+            if (byOperator) {
+                ledger.block(symbolicName, "removed-by-operator", why);
+            }
+            ledger.remove(symbolicName, byOperator ? "uninstalled-by-operator" : "uninstalled", reason);
+        }, symbolicName + " was NOT uninstalled and stays as it was");
+        pipeline.removeBundles(record);
         dto.state = "UNINSTALLED";
         info.accept("uninstalled " + symbolicName + " " + record.version() + " (" + reason + ")");
         return dto;
     }
 
-    /** Uninstalls the behaviour's bundle and those of its bundles no other installed behaviour lists. */
-    private void removeBundles(BehaviourRecord record) throws InterruptedException {
-        List<Bundle> remove = new ArrayList<>();
-        for (BundleFact f : record.bundles()) {
-            Bundle b = context.getBundle(f.location());
-            if (b != null && ledger.otherUsers(f.location(), record.symbolicName()) == 0) {
-                remove.add(b);
-            }
-        }
-        java.util.Collections.reverse(remove); // rollBack reverses again: the behaviour goes first
-        transaction.rollBack(remove);
-    }
-
-    private void done(BehaviourResource chosen, Deferred<InstalledBehaviour> deferred, BehaviourRecord record) {
+    /** An install ended: no longer under way. */
+    private void finished(Job job) {
         synchronized (this) {
-            inflight.remove(chosen.symbolicName());
+            inflight.remove(job.chosen.symbolicName(), job);
         }
-        deferred.resolve(dto(record));
-    }
-
-    private void fail(BehaviourResource chosen, Deferred<InstalledBehaviour> deferred, InstallException e) {
-        synchronized (this) {
-            inflight.remove(chosen.symbolicName());
-        }
-        deferred.fail(e);
     }
 
     private InstalledBehaviour notInstalled(String symbolicName) {

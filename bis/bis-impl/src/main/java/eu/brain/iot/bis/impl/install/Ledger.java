@@ -14,8 +14,10 @@ import eu.brain.iot.bis.impl.journal.Journal;
 
 /**
  * What the installer installed (behaviours and the bundles each needs, so that shared bundles are counted) and
- * which behaviours an operator removed; every change is written to the {@link Journal} at once. Journal entries not
- * (yet) installed again after a start are kept as {@code pending}, so that they stay in the journal.
+ * which behaviours an operator removed; every change is written to the {@link Journal} at once, all or nothing: when
+ * the journal cannot be written (a full disk, a read-only folder), the change is undone in memory too and the caller
+ * gets the {@link IOException}, so that what the installer says matches what a restart would find. Journal entries
+ * not (yet) installed again after a start are kept as {@code pending}, so that they stay in the journal.
  * <p>
  * Threads: changed mostly on the installer's thread ({@code allow} also on a caller's), read by any (Gogo,
  * {@code installed()}): every method is {@code synchronized}, journal writes included.
@@ -23,6 +25,7 @@ import eu.brain.iot.bis.impl.journal.Journal;
 final class Ledger {
 
     private final Journal journal;
+    /** Told when only the history (for people) could not be written: the journal itself is the truth. */
     private final Consumer<String> error;
     private final Map<String, BehaviourRecord> behaviours = new LinkedHashMap<>();
     private final Map<String, BehaviourRecord> pending = new LinkedHashMap<>();
@@ -49,12 +52,12 @@ final class Ledger {
         return new ArrayList<>(pending.values());
     }
 
-    synchronized void put(BehaviourRecord record, String history) {
-        behaviours.remove(record.symbolicName());
-        behaviours.put(record.symbolicName(), record);
-        pending.remove(record.symbolicName());
-        save("installed".equals(history) ? "installed" : history, record.symbolicName(), record.version(),
-                record.reason());
+    synchronized void put(BehaviourRecord record, String history) throws IOException {
+        change(() -> {
+            behaviours.remove(record.symbolicName());
+            behaviours.put(record.symbolicName(), record);
+            pending.remove(record.symbolicName());
+        }, history, record.symbolicName(), record.version(), record.reason());
     }
 
     /** Takes a journal entry back into use without a history line (it was installed before this start). */
@@ -63,29 +66,30 @@ final class Ledger {
         pending.remove(record.symbolicName());
     }
 
-    /** Records that an installed behaviour, found not active, was started again (a history line). */
+    /** Records that an installed behaviour, found not active, was started again (a history line only). */
     synchronized void restarted(BehaviourRecord record, String why, long at) {
         Restart last = restarts.get(record.symbolicName());
         restarts.put(record.symbolicName(), new Restart(at, why, last == null ? 1 : last.count() + 1));
-        save("restarted", record.symbolicName(), record.version(), why);
+        history("restarted", record.symbolicName(), record.version(), why);
     }
 
     synchronized Optional<Restart> lastRestart(String symbolicName) {
         return Optional.ofNullable(restarts.get(symbolicName));
     }
 
-    synchronized void remove(String symbolicName, String what, String reason) {
-        restarts.remove(symbolicName);
-        BehaviourRecord record = behaviours.remove(symbolicName);
-        pending.remove(symbolicName);
-        save(what, symbolicName, record == null ? null : record.version(), reason);
+    synchronized void remove(String symbolicName, String what, String reason) throws IOException {
+        BehaviourRecord record = behaviours.containsKey(symbolicName) ? behaviours.get(symbolicName)
+                : pending.get(symbolicName);
+        change(() -> {
+            restarts.remove(symbolicName);
+            behaviours.remove(symbolicName);
+            pending.remove(symbolicName);
+        }, what, symbolicName, record == null ? null : record.version(), reason);
     }
 
-    /** Forgets a journal entry that cannot be installed again (its index no longer offers it). */
-    synchronized void dropPending(String symbolicName, String reason) {
-        if (pending.remove(symbolicName) != null) {
-            save("forgotten", symbolicName, null, reason);
-        }
+    /** @return the journal entry not (yet) installed again under that name, if any */
+    synchronized Optional<BehaviourRecord> pendingEntry(String symbolicName) {
+        return Optional.ofNullable(pending.get(symbolicName));
     }
 
     synchronized boolean isBlocked(String symbolicName) {
@@ -93,16 +97,15 @@ final class Ledger {
     }
 
     /** @param what the history line's word: {@code removed-by-operator} or {@code stopped-by-operator} */
-    synchronized void block(String symbolicName, String what, String reason) {
-        blocked.put(symbolicName, reason);
-        save(what, symbolicName, null, reason);
+    synchronized void block(String symbolicName, String what, String reason) throws IOException {
+        change(() -> blocked.put(symbolicName, reason), what, symbolicName, null, reason);
     }
 
-    synchronized boolean allow(String symbolicName, String why) {
-        if (blocked.remove(symbolicName) == null) {
+    synchronized boolean allow(String symbolicName, String why) throws IOException {
+        if (!blocked.containsKey(symbolicName)) {
             return false;
         }
-        save("allowed", symbolicName, null, why);
+        change(() -> blocked.remove(symbolicName), "allowed", symbolicName, null, why);
         return true;
     }
 
@@ -127,16 +130,45 @@ final class Ledger {
                 .filter(b -> b.location().equals(location)).findFirst();
     }
 
-    private void save(String what, String symbolicName, String version, String reason) {
+    /**
+     * Makes a change in memory, writes the journal, and adds a history line; when the journal cannot be written, the
+     * change is undone in memory and the error thrown. Called under {@code this}.
+     */
+    private void change(Runnable mutation, String what, String symbolicName, String version, String reason)
+            throws IOException {
+        Map<String, BehaviourRecord> behavioursBefore = new LinkedHashMap<>(behaviours);
+        Map<String, BehaviourRecord> pendingBefore = new LinkedHashMap<>(pending);
+        Map<String, String> blockedBefore = new LinkedHashMap<>(blocked);
+        Map<String, Restart> restartsBefore = new LinkedHashMap<>(restarts);
+        mutation.run();
         List<BehaviourRecord> all = new ArrayList<>(behaviours.values());
         all.addAll(pending.values());
         try {
             journal.save(new Journal.State(all, blocked));
+        } catch (IOException e) {
+            restore(behaviours, behavioursBefore);
+            restore(pending, pendingBefore);
+            restore(blocked, blockedBefore);
+            restore(restarts, restartsBefore);
+            throw new IOException("cannot write the journal " + journal.file() + " (" + Journal.describe(e) + "): '"
+                    + what + " " + symbolicName + "' was not done; free space on that disk or make the folder"
+                    + " writable (or set journal.dir of eu.brain.iot.bis), then try again", e);
+        }
+        history(what, symbolicName, version, reason);
+    }
+
+    private static <V> void restore(Map<String, V> map, Map<String, V> before) {
+        map.clear();
+        map.putAll(before);
+    }
+
+    private void history(String what, String symbolicName, String version, String reason) {
+        try {
             journal.history(what, symbolicName, version, reason);
         } catch (IOException e) {
-            error.accept("cannot write the journal in " + journal.directory() + " (" + e + "): '" + what + " "
-                    + symbolicName + "' is done but will not survive a restart; check the directory's permissions"
-                    + " and free space, or set journal.dir of eu.brain.iot.bis");
+            error.accept("cannot add to the history " + journal.directory().resolve("history.log") + " ("
+                    + Journal.describe(e) + "): '" + what + " " + symbolicName + "' is done and in the journal, only"
+                    + " its line for people is missing; check the folder's free space and permissions");
         }
     }
 }

@@ -1,13 +1,8 @@
 package eu.brain.iot.bis.impl.install;
 
-import java.io.ByteArrayInputStream;
 import java.io.IOException;
-import java.security.MessageDigest;
-import java.security.NoSuchAlgorithmException;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.HexFormat;
-import java.util.LinkedHashMap;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -36,14 +31,14 @@ import eu.brain.iot.bis.api.InstallException;
 import eu.brain.iot.bis.api.InstallException.Problem;
 import eu.brain.iot.bis.impl.repo.BehaviourResource;
 import eu.brain.iot.bis.impl.repo.Repositories;
-import eu.brain.iot.bis.impl.repo.UrlReader;
 
 /**
- * One install, all or nothing: resolve the behaviour with the OSGi Resolver against the framework and the
- * repositories; download every bundle the framework lacks and check its size and SHA-256 against the index before
- * anything is installed; install them from the verified bytes; start them, dependencies first; wait until the
- * behaviour's smart behaviours are registered with the bus. Any failure uninstalls what this transaction installed
- * and refreshes the framework, so that it is as before. Runs on the installer's thread only.
+ * One install, all or nothing, in two steps: {@link #plan} resolves the behaviour with the OSGi Resolver against the
+ * framework and the repositories and lists the bundles the framework lacks, which the installer then downloads and
+ * verifies ({@link Downloads}, off the installer's thread); {@link #apply} installs them from the verified files,
+ * starts them, dependencies first, and waits until the behaviour's smart behaviours are registered with the bus. Any
+ * failure uninstalls what this transaction installed and refreshes the framework, so that it is as before. Runs on
+ * the installer's thread only.
  */
 final class Transaction {
 
@@ -55,36 +50,40 @@ final class Transaction {
     record Installed(Bundle bundle, BehaviourResource facts) {
     }
 
+    /** A resolution and the bundles to download and install for it, dependencies first. */
+    record Plan(BehaviourResource behaviour, Map<Resource, List<Wire>> resolution, List<BehaviourResource> order) {
+    }
+
     private final BundleContext context;
     private final Resolver resolver;
     private final Repositories repositories;
-    private final UrlReader reader;
     private final Activation activation;
     private final long activationTimeoutMillis;
     private final Consumer<String> warn;
 
-    Transaction(BundleContext context, Resolver resolver, Repositories repositories, UrlReader reader,
-            Activation activation, long activationTimeoutMillis, Consumer<String> warn) {
+    Transaction(BundleContext context, Resolver resolver, Repositories repositories, Activation activation,
+            long activationTimeoutMillis, Consumer<String> warn) {
         this.context = context;
         this.resolver = resolver;
         this.repositories = repositories;
-        this.reader = reader;
         this.activation = activation;
         this.activationTimeoutMillis = activationTimeoutMillis;
         this.warn = warn;
     }
 
-    Result run(BehaviourResource behaviour) throws InstallException, InterruptedException {
+    Plan plan(BehaviourResource behaviour) throws InstallException {
         Map<Resource, List<Wire>> resolution = resolve(behaviour);
-        List<BehaviourResource> order = installOrder(behaviour, resolution);
-        Map<BehaviourResource, byte[]> bytes = new LinkedHashMap<>();
-        for (BehaviourResource r : order) {
-            bytes.put(r, download(behaviour, r));
-        }
+        return new Plan(behaviour, resolution, installOrder(behaviour, resolution));
+    }
+
+    /** @param files the verified file of every bundle of the plan, by {@link Downloads#key} */
+    Result apply(Plan plan, Map<String, java.nio.file.Path> files) throws InstallException, InterruptedException {
+        BehaviourResource behaviour = plan.behaviour();
+        Map<Resource, List<Wire>> resolution = plan.resolution();
         List<Installed> installed = new ArrayList<>();
         try {
-            for (BehaviourResource r : order) {
-                installed.add(new Installed(install(r, bytes.get(r)), r));
+            for (BehaviourResource r : plan.order()) {
+                installed.add(new Installed(install(r, files.get(Downloads.key(r))), r));
             }
             for (Installed i : installed) {
                 start(i);
@@ -203,36 +202,15 @@ final class Transaction {
         return new ArrayList<>(reused);
     }
 
-    private byte[] download(BehaviourResource behaviour, BehaviourResource r) throws InstallException,
-            InterruptedException {
-        byte[] bytes;
-        try {
-            bytes = reader.read(r.url());
-        } catch (IOException e) {
-            throw new InstallException(Problem.DOWNLOAD_FAILED, "cannot download " + r + " from " + r.url() + " ("
-                    + e.getMessage() + ")" + needed(behaviour, r) + ": check that the repository " + r.repository()
-                    + " is reachable and holds the file, then try again", e);
-        }
-        String actual = sha256(bytes);
-        if (!actual.equalsIgnoreCase(r.sha256()) || r.size() >= 0 && r.size() != bytes.length) {
-            throw new InstallException(Problem.HASH_MISMATCH, r + " from " + r.url() + " does not match its index "
-                    + r.repository() + needed(behaviour, r) + ": SHA-256 " + actual + " (" + bytes.length
-                    + " bytes), the index says " + r.sha256() + " (" + r.size() + " bytes). Nothing was installed."
-                    + " The file was changed after the index was made: restore the file, or rebuild and re-sign the"
-                    + " index if the change is wanted");
-        }
-        return bytes;
-    }
-
-    private Bundle install(BehaviourResource r, byte[] bytes) throws InstallException {
+    private Bundle install(BehaviourResource r, java.nio.file.Path file) throws InstallException {
         String location = r.url().toString();
         if (context.getBundle(location) != null) {
             throw new InstallException(Problem.START_FAILED, r + ": a bundle is already installed from " + location
                     + " (bundle " + context.getBundle(location).getBundleId() + ") with another identity: uninstall"
                     + " it first");
         }
-        try {
-            Bundle installed = context.installBundle(location, new ByteArrayInputStream(bytes));
+        try (java.io.InputStream in = java.nio.file.Files.newInputStream(file)) {
+            Bundle installed = context.installBundle(location, in);
             // A launcher may give bundles installed at run time a start level above the one the framework is at
             // (bnd's launcher: above every run bundle), and start() would then only mark them for later: a
             // behaviour would not run until the framework climbed there. The installer's own level is reached.
@@ -244,7 +222,7 @@ final class Transaction {
                 level.setStartLevel(own);
             }
             return installed;
-        } catch (BundleException e) {
+        } catch (BundleException | IOException e) {
             throw new InstallException(Problem.START_FAILED, r + " from " + r.url() + " could not be installed: "
                     + e.getMessage(), e);
         }
@@ -265,22 +243,10 @@ final class Transaction {
         }
     }
 
-    private static String needed(BehaviourResource behaviour, BehaviourResource r) {
-        return r == behaviour ? "" : ", needed by " + behaviour;
-    }
-
     private static String describe(Requirement requirement) {
         String filter = requirement.getDirectives().get("filter");
         return requirement.getNamespace() + (filter == null ? "" : " " + filter) + " (required by "
                 + requirement.getResource() + ")";
-    }
-
-    static String sha256(byte[] bytes) {
-        try {
-            return HexFormat.of().formatHex(MessageDigest.getInstance("SHA-256").digest(bytes));
-        } catch (NoSuchAlgorithmException e) {
-            throw new IllegalStateException(e);
-        }
     }
 
     private static String firstLine(String message) {

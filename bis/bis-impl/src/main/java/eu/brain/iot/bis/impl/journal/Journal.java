@@ -42,6 +42,20 @@ public final class Journal {
         return directory;
     }
 
+    public Path file() {
+        return file;
+    }
+
+    /** An I/O error in words: its message, or its kind when it has none (a NoSuchFileException's is the path). */
+    public static String describe(IOException e) {
+        String message = e.getMessage();
+        String kind = e.getClass().getSimpleName();
+        if (message == null || message.isBlank()) {
+            return kind;
+        }
+        return e.getClass() == IOException.class ? message : message + " (" + kind + ")";
+    }
+
     /** What the journal holds: installed behaviours (oldest first) and the operator's removals (name to reason). */
     public record State(List<BehaviourRecord> behaviours, Map<String, String> blocked) {
     }
@@ -89,13 +103,67 @@ public final class Journal {
         }
         state.blocked().forEach((name, reason) -> out.append(String.join("\t", BLOCKED, escape(name), escape(reason)))
                 .append('\n'));
-        Path temp = directory.resolve("journal.tsv.tmp");
-        Files.writeString(temp, out, StandardCharsets.UTF_8);
+        Path temp = directory.resolve(file.getFileName() + ".tmp");
         try {
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
-        } catch (AtomicMoveNotSupportedException e) {
-            Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
+            // written and forced to the disk before it replaces the journal: a full disk fails here, not later
+            try (java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(temp,
+                    StandardOpenOption.CREATE, StandardOpenOption.WRITE, StandardOpenOption.TRUNCATE_EXISTING)) {
+                java.nio.ByteBuffer bytes = StandardCharsets.UTF_8.encode(out.toString());
+                while (bytes.hasRemaining()) {
+                    channel.write(bytes);
+                }
+                channel.force(true);
+            }
+            try {
+                Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING, StandardCopyOption.ATOMIC_MOVE);
+            } catch (AtomicMoveNotSupportedException e) {
+                Files.move(temp, file, StandardCopyOption.REPLACE_EXISTING);
+            }
+        } catch (IOException e) {
+            try {
+                Files.deleteIfExists(temp); // no half-written or empty file left beside the journal
+            } catch (IOException alsoFailed) {
+                e.addSuppressed(alsoFailed);
+            }
+            throw e;
         }
+    }
+
+    /**
+     * Locks the journal's folder for this installer (an exclusive lock on {@code journal.lock}, released by the
+     * returned handle or when the process ends): two installers writing one journal would lose entries.
+     *
+     * @throws IOException saying which process holds it, when another does
+     */
+    public AutoCloseable lock() throws IOException {
+        Files.createDirectories(directory);
+        Path lockFile = directory.resolve("journal.lock");
+        java.nio.channels.FileChannel channel = java.nio.channels.FileChannel.open(lockFile, StandardOpenOption.CREATE,
+                StandardOpenOption.READ, StandardOpenOption.WRITE);
+        java.nio.channels.FileLock lock;
+        try {
+            lock = channel.tryLock();
+        } catch (java.nio.channels.OverlappingFileLockException e) {
+            lock = null;
+        }
+        if (lock == null) {
+            String holder = new String(Files.readAllBytes(lockFile), StandardCharsets.UTF_8).trim();
+            channel.close();
+            throw new IOException("the journal folder " + directory + " is in use by another Bundle Installer ("
+                    + (holder.isEmpty() ? "process unknown" : holder) + "): each node needs a state folder of its own;"
+                    + " start this node with --state=DIR or --name=NAME, or set journal.dir of eu.brain.iot.bis");
+        }
+        channel.truncate(0);
+        channel.write(java.nio.ByteBuffer.wrap(("process " + ProcessHandle.current().pid() + "\n")
+                .getBytes(StandardCharsets.UTF_8)), 0);
+        java.nio.channels.FileLock held = lock;
+        return () -> {
+            try {
+                held.release();
+            } finally {
+                channel.close();
+            }
+        };
     }
 
     /** Appends a line for people: time, what, which behaviour, why. */

@@ -25,8 +25,13 @@ import eu.brain.iot.bis.sign.IndexSigning;
  * {@link IndexSnapshot}, replaced only by a newer index that parsed and (when keys are configured) carries a valid
  * signature: a refused index leaves the previous one in use.
  * <p>
- * Threads: every read runs on the given scheduler (one task per index at a time); each {@link Holder}'s mutable
- * fields are written only there, and published to other threads through its {@code volatile} snapshot and status.
+ * Every index is read on its own: the scheduler has a thread per index, and each read is bounded in size
+ * ({@code maxIndexBytes}) and time (the reader's deadline), so a repository that never answers, or trickles, holds up
+ * no other; the indexes that answered are in use meanwhile.
+ * <p>
+ * Threads: every read runs on the given scheduler, one read per index at a time (its {@link Holder#reading} flag);
+ * each {@link Holder}'s mutable fields are written only by the read that holds that flag, and published to other
+ * threads through its {@code volatile} snapshot and status; {@link Holder#next} is guarded by the holder.
  */
 public final class Repositories {
 
@@ -39,14 +44,19 @@ public final class Repositories {
     private final long retryMaxMillis;
     private final Consumer<String> warn;
     private final Consumer<String> info;
+    private final long maxIndexBytes;
     private final CountDownLatch firstAttempts;
-    private final CountDownLatch loaded;
     private volatile boolean closed;
     private volatile Runnable onChange = () -> { };
 
+    /** The most a signature file may hold: an Ed25519 signature in base64 is under 100 bytes. */
+    private static final long SIGNATURE_MAX_BYTES = 64 * 1024;
+
+    /** @param scheduler runs the reads: give it a thread per index, so that no index waits for another's read */
     public Repositories(List<URI> urls, TrustedKeys keys, UrlReader reader, ScheduledExecutorService scheduler,
-            long refreshMillis, long retryInitialMillis, long retryMaxMillis, Consumer<String> warn,
-            Consumer<String> info) {
+            long refreshMillis, long retryInitialMillis, long retryMaxMillis, long maxIndexBytes,
+            Consumer<String> warn, Consumer<String> info) {
+        this.maxIndexBytes = Math.max(1, maxIndexBytes);
         this.keys = keys;
         this.reader = reader;
         this.scheduler = scheduler;
@@ -57,7 +67,6 @@ public final class Repositories {
         this.info = info;
         urls.forEach(u -> holders.add(new Holder(u)));
         this.firstAttempts = new CountDownLatch(holders.size());
-        this.loaded = new CountDownLatch(holders.size());
     }
 
     /** @param listener called on the reader's thread after an index's content in use was replaced */
@@ -66,7 +75,7 @@ public final class Repositories {
     }
 
     public void start() {
-        holders.forEach(h -> scheduler.execute(() -> read(h)));
+        holders.forEach(h -> schedule(h, 0));
     }
 
     public void close() {
@@ -76,11 +85,6 @@ public final class Repositories {
     /** Waits until every index was tried once (read or failed), at most {@code millis}. */
     public boolean awaitFirstAttempts(long millis) throws InterruptedException {
         return firstAttempts.await(millis, TimeUnit.MILLISECONDS);
-    }
-
-    /** Waits until every index has been read successfully once, at most {@code millis}. */
-    public boolean awaitLoaded(long millis) throws InterruptedException {
-        return loaded.await(millis, TimeUnit.MILLISECONDS);
     }
 
     /** @return the behaviour and library resources of every index in use, in configuration order */
@@ -107,7 +111,11 @@ public final class Repositories {
         return all;
     }
 
-    /** @return the facts of a resource of one of the indexes, if it is one */
+    /**
+     * @return the facts of a resource of one of the indexes, if it is one: the same resource object, or, when its
+     *         index was read anew since the resource was found (a resolution in progress), the resource of the same
+     *         identity and version in the index now in use
+     */
     public Optional<BehaviourResource> facts(org.osgi.resource.Resource resource) {
         for (Holder h : holders) {
             IndexSnapshot snapshot = h.snapshot;
@@ -116,26 +124,53 @@ public final class Repositories {
                 return Optional.of(facts);
             }
         }
-        return Optional.empty();
+        Optional<BehaviourResource> identity = BehaviourResource.of(resource, java.net.URI.create("unknown:"));
+        return identity.flatMap(wanted -> resources().stream().filter(r -> r.symbolicName().equals(wanted
+                .symbolicName()) && r.version().equals(wanted.version())).findFirst());
     }
 
     public List<IndexStatus> status() {
         return holders.stream().map(h -> h.status).toList();
     }
 
-    /** Re-reads every index now (e.g. {@code bis:repos refresh}). */
+    /** Re-reads every index now (e.g. {@code bis:repos refresh}); an index being read now is left to that read. */
     public void refreshNow() {
-        holders.forEach(h -> scheduler.execute(() -> read(h)));
+        holders.forEach(h -> schedule(h, 0));
+    }
+
+    /** Replaces the index's next read by one in {@code delayMillis}. */
+    private void schedule(Holder h, long delayMillis) {
+        synchronized (h) {
+            if (closed) {
+                return;
+            }
+            if (h.next != null) {
+                h.next.cancel(false);
+            }
+            try {
+                h.next = scheduler.schedule(() -> read(h), delayMillis, TimeUnit.MILLISECONDS);
+            } catch (java.util.concurrent.RejectedExecutionException e) {
+                // closing
+            }
+        }
     }
 
     private void read(Holder h) {
-        if (closed) {
-            return;
+        if (closed || !h.reading.compareAndSet(false, true)) {
+            return; // this index is being read now: that read schedules the next
         }
+        try {
+            readNow(h);
+        } finally {
+            h.reading.set(false);
+        }
+    }
+
+    private void readNow(Holder h) {
         long now = System.currentTimeMillis();
         long next = refreshMillis;
         try {
-            Fetch fetch = reader.fetch(h.url, h.validators);
+            Fetch fetch = reader.fetch(h.url, h.validators, maxIndexBytes);
             if (fetch instanceof Fetch.Content content) {
                 accept(h, content, now);
             } else {
@@ -144,7 +179,11 @@ public final class Repositories {
         } catch (IOException e) {
             int failures = h.status.failures() + 1;
             next = Math.min(retryMaxMillis, retryInitialMillis << Math.min(20, failures - 1));
-            String message = h.url + " cannot be read (" + e.getMessage() + "); retry " + failures + " in " + next
+            String problem = Errors.describe(e);
+            String prefix = h.url + ": ";
+            String message = (problem.startsWith(prefix) ? h.url + " cannot be read (" + problem.substring(
+                    prefix.length()) + ")" : problem.contains(h.url.toString()) ? problem : h.url + " cannot be read ("
+                            + problem + ")") + "; retry " + failures + " in " + next
                     + " ms" + (h.snapshot == null ? "" : ", the index read before stays in use");
             if (failures == 1 || Long.bitCount(failures) == 1) {
                 warn.accept(message); // 1st, 2nd, 4th, 8th... failure: visible without flooding the log
@@ -156,17 +195,16 @@ public final class Repositories {
             Thread.currentThread().interrupt();
             return;
         } catch (RuntimeException e) {
-            warn.accept(h.url + ": unexpected failure while reading the index: " + e);
-            h.publish(h.signature, h.status.failures() + 1, String.valueOf(e), now);
+            String message = h.url + ": unexpected failure while reading the index: " + Errors.describe(e);
+            warn.accept(message);
+            h.publish(h.signature, h.status.failures() + 1, message, now);
         } finally {
             if (!h.attempted) {
                 h.attempted = true;
                 firstAttempts.countDown();
             }
         }
-        if (!closed) {
-            scheduler.schedule(() -> read(h), next, TimeUnit.MILLISECONDS);
-        }
+        schedule(h, next);
     }
 
     /** Checks the signature and parses; only then replaces the snapshot. */
@@ -176,7 +214,7 @@ public final class Repositories {
         String signature = "not checked (no trusted.keys configured)";
         if (keys.enabled()) {
             URI sigUrl = URI.create(h.url + IndexSigning.SUFFIX);
-            Optional<byte[]> sig = reader.readIfPresent(sigUrl);
+            Optional<byte[]> sig = reader.readIfPresent(sigUrl, SIGNATURE_MAX_BYTES);
             int key = sig.isEmpty() ? -1 : keys.verify(content.bytes(), new String(sig.get(), StandardCharsets.US_ASCII));
             if (key < 0) {
                 String problem = sig.isEmpty() ? "has no signature file " + sigUrl
@@ -195,9 +233,19 @@ public final class Repositories {
             }
             signature = "valid (key " + keys.describe(key) + ")";
         }
+        if (h.snapshot != null && digest.equals(h.digest)) {
+            // the same bytes again (a touched file, a server that ignores conditional requests): the snapshot in use
+            // stays, so that a resolution in progress keeps finding its resources; the journal's entries not back
+            // are tried again all the same (their bundles may have been repaired)
+            h.validators = content.validators();
+            h.readAt = now;
+            h.publish(signature, 0, null, now);
+            onChange.run();
+            return;
+        }
         IndexSnapshot snapshot;
         try {
-            snapshot = new IndexSnapshot(h.url, IndexParser.parse(content.bytes(), h.url));
+            snapshot = new IndexSnapshot(h.url, IndexParser.parse(content.bytes(), h.url, maxIndexBytes));
         } catch (IndexException e) {
             if (!digest.equals(h.refusedDigest)) {
                 warn.accept(e.getMessage() + (h.snapshot == null ? "" : "; the index read before stays in use"));
@@ -205,16 +253,13 @@ public final class Repositories {
             }
             throw e;
         }
-        boolean first = h.snapshot == null;
         h.validators = content.validators();
         h.refusedDigest = null;
+        h.digest = digest;
         h.snapshot = snapshot;
         h.readAt = now;
         info.accept("index " + h.url + " read: " + snapshot.resources().size() + " resources, signature " + signature);
         h.publish(signature, 0, null, now);
-        if (first) {
-            loaded.countDown(); // after the snapshot is in place: a waiting journal restore reads it at once
-        }
         onChange.run();
     }
 
@@ -226,13 +271,17 @@ public final class Repositories {
         }
     }
 
-    /** One index. Mutable fields: written on the scheduler only. */
+    /** One index. Mutable fields: written only by the read holding {@link #reading}; {@link #next} under the holder. */
     private static final class Holder {
         final URI url;
+        final java.util.concurrent.atomic.AtomicBoolean reading = new java.util.concurrent.atomic.AtomicBoolean();
+        java.util.concurrent.ScheduledFuture<?> next;
         volatile IndexSnapshot snapshot;
         volatile IndexStatus status;
         Fetch.Validators validators = Fetch.Validators.NONE;
         String refusedDigest;
+        /** The SHA-256 of the index's bytes in use. */
+        String digest;
         String signature = "-";
         long readAt;
         boolean attempted;
