@@ -30,7 +30,26 @@ final class Judge {
      *                       -1 when the run ended by itself
      */
     static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs) {
-        boolean deadlineHit = deadlineHitMs >= 0;
+        return deadlineHitMs >= 0 ? judge(end, waitLimitMs, RunEnd.DEADLINE, deadlineHitMs)
+                : judge(end, waitLimitMs, RunEnd.FINISHED, -1);
+    }
+
+    /** How a run ended. */
+    enum RunEnd {
+        /** the warehouse was done */
+        FINISHED,
+        /** the deadline ended it */
+        DEADLINE,
+        /** the node's process ended before the warehouse was done: the run cannot have finished */
+        NODE_ENDED
+    }
+
+    /**
+     * @param how     how the run ended
+     * @param endedMs the warehouse time (since the scenario's start) at which it ended, for {@code DEADLINE} and
+     *                {@code NODE_ENDED}
+     */
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, RunEnd how, long endedMs) {
         List<Verdict.Check> checks = new ArrayList<>();
         List<String> missing = end.cartsNotInStorage();
         checks.add(new Verdict.Check("REQ-1 every cart lifted and carried to storage", missing.isEmpty(),
@@ -55,9 +74,12 @@ final class Judge {
 
         checks.add(commands(end, missing.isEmpty() && away.isEmpty()));
 
-        checks.add(new Verdict.Check("finished before the deadline", !deadlineHit, deadlineHit
-                ? "the deadline ended the run at " + WarehouseTime.format(deadlineHitMs) + " of warehouse time"
-                : "finished"));
+        checks.add(new Verdict.Check("finished before the deadline", how == RunEnd.FINISHED, switch (how) {
+            case FINISHED -> "finished";
+            case DEADLINE -> "the deadline ended the run at " + WarehouseTime.format(endedMs) + " of warehouse time";
+            case NODE_ENDED -> "the node ended during the run, at " + WarehouseTime.format(endedMs)
+                    + " of warehouse time: the run could not finish";
+        }));
         return new Verdict(List.copyOf(checks));
     }
 
