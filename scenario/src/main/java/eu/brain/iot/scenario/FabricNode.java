@@ -110,7 +110,8 @@ final class FabricNode implements AutoCloseable {
         ready.complete("the node ended (exit code " + exitCode() + ") before every bundle was active");
     }
 
-    private String exitCode() {
+    /** The process's exit code (waiting up to 5 s for it to end), or "none yet". */
+    String exitCode() {
         try {
             return process.waitFor(5, TimeUnit.SECONDS) ? String.valueOf(process.exitValue()) : "none yet";
         } catch (InterruptedException e) {

@@ -33,20 +33,39 @@ final class Judge {
     private Judge() {
     }
 
-    /** {@link #judge(WorldSnapshot, long, long, long)} with the default lease period ({@value #DEFAULT_LEASE_MS} ms). */
-    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs) {
-        return judge(end, waitLimitMs, deadlineHitMs, DEFAULT_LEASE_MS);
+    /** How a run ended. */
+    enum RunEnd {
+        /** the warehouse was done */
+        FINISHED,
+        /** the deadline ended it */
+        DEADLINE,
+        /** the node's process ended before the warehouse was done: the run cannot have finished */
+        NODE_ENDED
     }
 
     /**
-     * @param end            the world when the run ended
-     * @param waitLimitMs    the longest a robot may wait behind another (warehouse ms)
-     * @param deadlineHitMs  the warehouse time (since the scenario's start) at which the deadline ended the run, or
-     *                       -1 when the run ended by itself
-     * @param leaseMs        the lease period (wall ms): two nodes commanding one robot closer than this fail the run
+     * A run that ended by itself ({@code deadlineHitMs} -1) or at the deadline, judged with the default lease period
+     * ({@value #DEFAULT_LEASE_MS} ms).
      */
-    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs, long leaseMs) {
-        boolean deadlineHit = deadlineHitMs >= 0;
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, long deadlineHitMs) {
+        return deadlineHitMs >= 0 ? judge(end, waitLimitMs, RunEnd.DEADLINE, deadlineHitMs)
+                : judge(end, waitLimitMs, RunEnd.FINISHED, -1);
+    }
+
+    /** {@link #judge(WorldSnapshot, long, RunEnd, long, long)} with the default lease period. */
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, RunEnd how, long endedMs) {
+        return judge(end, waitLimitMs, how, endedMs, DEFAULT_LEASE_MS);
+    }
+
+    /**
+     * @param end         the world when the run ended
+     * @param waitLimitMs the longest a robot may wait behind another (warehouse ms)
+     * @param how         how the run ended
+     * @param endedMs     the warehouse time (since the scenario's start) at which it ended, for {@code DEADLINE} and
+     *                    {@code NODE_ENDED}
+     * @param leaseMs     the lease period (wall ms): two nodes commanding one robot closer than this fail the run
+     */
+    static Verdict judge(WorldSnapshot end, long waitLimitMs, RunEnd how, long endedMs, long leaseMs) {
         List<Verdict.Check> checks = new ArrayList<>();
         List<String> missing = end.cartsNotInStorage();
         checks.add(new Verdict.Check("REQ-1 every cart lifted and carried to storage", missing.isEmpty(),
@@ -72,9 +91,12 @@ final class Judge {
         checks.add(commands(end, missing.isEmpty() && away.isEmpty()));
         checks.add(oneCommanderAtATime(end, leaseMs));
 
-        checks.add(new Verdict.Check("finished before the deadline", !deadlineHit, deadlineHit
-                ? "the deadline ended the run at " + WarehouseTime.format(deadlineHitMs) + " of warehouse time"
-                : "finished"));
+        checks.add(new Verdict.Check("finished before the deadline", how == RunEnd.FINISHED, switch (how) {
+            case FINISHED -> "finished";
+            case DEADLINE -> "the deadline ended the run at " + WarehouseTime.format(endedMs) + " of warehouse time";
+            case NODE_ENDED -> "the node ended during the run, at " + WarehouseTime.format(endedMs)
+                    + " of warehouse time: the run could not finish";
+        }));
         return new Verdict(List.copyOf(checks));
     }
 

@@ -124,7 +124,7 @@ final class ScenarioRunner {
         WorldSnapshot now = start;
         long deliveredAfter = -1;
         long nextProgress = 0;
-        boolean deadlineHit = false;
+        Judge.RunEnd how = Judge.RunEnd.FINISHED;
         while (true) {
             now = new WorldSnapshot(sim.worldDocument());
             long t = Figures.elapsedMs(start, now);
@@ -142,11 +142,13 @@ final class ScenarioRunner {
                 break;
             }
             if (t >= options.deadlineMs()) {
-                deadlineHit = true;
+                how = Judge.RunEnd.DEADLINE;
                 break;
             }
             if (!node.alive()) {
-                out.println("scenario: the node ended during the run (see " + node.log() + ")");
+                how = Judge.RunEnd.NODE_ENDED;
+                out.println("scenario: the node ended during the run (exit code " + node.exitCode() + "; its log: "
+                        + node.log() + ")");
                 break;
             }
             Thread.sleep(LOOK_EVERY_MS);
@@ -167,9 +169,10 @@ final class ScenarioRunner {
             }
             extra.addAll(behavioursBack(faults));
         } else {
-            extra.add(new Verdict.Check("the node ran until the end", false, "it ended during the run"));
+            extra.add(new Verdict.Check("the node ran until the end", false, "it ended during the run (exit code "
+                    + node.exitCode() + "; its log: " + node.log() + ")"));
         }
-        Verdict judged = Judge.judge(now, options.waitLimitMs(), deadlineHit ? Figures.elapsedMs(start, now) : -1);
+        Verdict judged = Judge.judge(now, options.waitLimitMs(), how, Figures.elapsedMs(start, now));
         List<Verdict.Check> checks = new ArrayList<>(judged.checks());
         checks.addAll(extra);
         Verdict verdict = new Verdict(List.copyOf(checks));

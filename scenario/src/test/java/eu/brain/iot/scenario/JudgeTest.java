@@ -42,6 +42,19 @@ class JudgeTest {
     }
 
     @Test
+    void aNodeThatEndedDuringTheRunFailsTheRunAndSaysSo() throws Exception {
+        try (Fleet f = Fleet.paper()) {
+            f.openDoor();
+            f.step(10);
+            Verdict v = Judge.judge(f.world(), LIMIT_MS, Judge.RunEnd.NODE_ENDED, 12_000);
+            assertThat(v.passed()).isFalse();
+            assertThat(check(v, "finished before the deadline").passed()).isFalse();
+            assertThat(detail(v, "deadline")).isEqualTo("the node ended during the run, at 12.0 s of warehouse time: "
+                    + "the run could not finish");
+        }
+    }
+
+    @Test
     void aCartStillCarriedFailsReq1AndSaysWhereItIs() throws Exception {
         try (Fleet f = Fleet.paper()) {
             f.openDoor();

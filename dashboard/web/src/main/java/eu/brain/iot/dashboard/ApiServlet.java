@@ -54,7 +54,7 @@ public final class ApiServlet extends HttpServlet {
         }
         String path = req.getPathInfo() == null ? "/" : req.getPathInfo();
         if (!path.equals("/snapshot") && !path.equals("/stream")) {
-            Json.error(resp, 404, "no " + ROOT + path + "; the dashboard's API has " + PATHS);
+            Json.error(resp, 404, "no " + Json.echo(ROOT + path) + "; the dashboard's API has " + PATHS);
             return;
         }
         if (!req.getMethod().equals("GET") && !req.getMethod().equals("HEAD")) {
@@ -98,8 +98,24 @@ public final class ApiServlet extends HttpServlet {
         if (req.getMethod().equals("HEAD")) {
             return; // the headers only: a stream has no length to tell
         }
-        AsyncContext async = req.startAsync();
-        async.setTimeout(0); // a stream has no end of its own; heartbeats find the pages that left
-        hub.attach(new SseStream(async, hub.clientQueueCapacity(), hub::detach), last);
+        StreamLimit limit = hub.streamLimit();
+        if (!limit.tryAcquire()) {
+            resp.reset();
+            resp.setHeader("Retry-After", "10");
+            resp.setHeader("Connection", "close");
+            Json.error(resp, 503, limit.refusal());
+            return;
+        }
+        try {
+            AsyncContext async = req.startAsync();
+            async.setTimeout(0); // a stream has no end of its own; heartbeats find the pages that left
+            hub.attach(new SseStream(async, hub.clientQueueCapacity(), s -> {
+                hub.detach(s);
+                limit.release(); // once: a stream ends once
+            }), last);
+        } catch (IOException | RuntimeException e) {
+            limit.release();
+            throw e;
+        }
     }
 }

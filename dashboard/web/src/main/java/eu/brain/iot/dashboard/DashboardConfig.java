@@ -28,6 +28,10 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
             + "slow (it reconnects and catches up)")
     int client_queue_capacity() default 128;
 
+    @AttributeDefinition(description = "Streams (pages open) at most, all clients together; more are answered 503. "
+            + "Keeps the server's connections free for other requests")
+    int max_streams() default 64;
+
     @AttributeDefinition(description = "Time between two heartbeat comments on every stream (milliseconds)")
     long heartbeat_ms() default 15_000;
 

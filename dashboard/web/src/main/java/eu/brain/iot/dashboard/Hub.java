@@ -70,6 +70,7 @@ public final class Hub {
     private String fabricNow = "{}";
     private boolean fabricChanged;
     private long nextReconcile;
+    private final StreamLimit streamLimit;
 
     @Activate
     public Hub(@Reference DeviceModel model,
@@ -85,6 +86,7 @@ public final class Hub {
         this.model = model;
         this.config = check(config);
         this.log = log;
+        this.streamLimit = new StreamLimit(config.max_streams(), log);
         this.fabric = new Fabric(bus, installer, bms, poll);
         this.activity = new Activity(config.decisions());
         this.devices = new Devices(activity);
@@ -104,6 +106,7 @@ public final class Hub {
         positive("replay.events", c.replay_events());
         positive("client.queue.capacity", c.client_queue_capacity());
         positive("heartbeat.ms", c.heartbeat_ms());
+        positive("max.streams", c.max_streams());
         positive("decisions", c.decisions());
         return c;
     }
@@ -267,6 +270,11 @@ public final class Hub {
 
     private void heartbeat() {
         List.copyOf(streams).forEach(s -> s.send(": heartbeat\n\n"));
+    }
+
+    /** The cap on open streams: a stream acquires it before it starts and releases it when it ends. */
+    StreamLimit streamLimit() {
+        return streamLimit;
     }
 
     int clientQueueCapacity() {

@@ -33,6 +33,17 @@ final class Json {
         return new com.fasterxml.jackson.databind.util.RawValue(json);
     }
 
+    /** Longer than any path of the dashboard: what an error may repeat of a request. */
+    static final int MAX_ECHO_CHARS = 120;
+
+    /** Request text (a path) as an error message may repeat it: cut, with its length, when long. */
+    static String echo(String text) {
+        if (text == null || text.length() <= MAX_ECHO_CHARS) {
+            return text;
+        }
+        return text.substring(0, MAX_ECHO_CHARS) + "... (" + text.length() + " characters)";
+    }
+
     static void answer(HttpServletResponse resp, int status, String json) throws IOException {
         resp.setStatus(status);
         resp.setContentType("application/json");

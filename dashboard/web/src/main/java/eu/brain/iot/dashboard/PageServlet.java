@@ -40,7 +40,7 @@ public final class PageServlet extends HttpServlet {
     protected void service(HttpServletRequest req, HttpServletResponse resp) throws IOException {
         if (!req.getMethod().equals("GET") && !req.getMethod().equals("HEAD")) {
             resp.setHeader("Allow", "GET, HEAD");
-            Json.error(resp, 405, req.getMethod() + " is not allowed on " + req.getRequestURI()
+            Json.error(resp, 405, req.getMethod() + " is not allowed on " + Json.echo(req.getRequestURI())
                     + "; the page is read-only: use GET");
             return;
         }
@@ -55,7 +55,7 @@ public final class PageServlet extends HttpServlet {
         String ext = path.substring(path.lastIndexOf('.') + 1);
         URL file = path.contains("..") || !TYPES.containsKey(ext) ? null : PageServlet.class.getResource("/web" + path);
         if (file == null) {
-            Json.error(resp, 404, "no " + req.getRequestURI() + "; the dashboard is at /dashboard/");
+            Json.error(resp, 404, "no " + Json.echo(req.getRequestURI()) + "; the dashboard is at /dashboard/");
             return;
         }
         resp.setStatus(200);

@@ -29,7 +29,8 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  * The bus core, free of OSGi wiring so that it can be tested and benchmarked on its own.
  * <p>
  * {@code deliver} runs on the publisher's thread: it snapshots the event, finds its route, reserves a slot in the
- * queue of every target behaviour (all or none, waiting up to the overflow timeout), queues the snapshot, and
+ * queue of every target behaviour (all or none, waiting up to the overflow timeout; a stalled behaviour is
+ * skipped, see {@link StallPolicy}), queues the snapshot, and
  * wakes at most one delivery worker. The workers of the {@link DeliveryPool} then take turns on the behaviours
  * with queued events: each makes its behaviour's copy and calls it (see {@link ConsumerChannel}).
  * <p>
@@ -151,13 +152,14 @@ final class AsyncEventBus implements EventBus {
      * @return false when a queue was full and {@code wait} is false (nothing queued then)
      */
     private boolean send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot, boolean wait) {
-        if (!reserveAll(targets, typeCounters.eventType, wait)) {
+        ConsumerChannel[] reserved = reserveAll(targets, typeCounters, wait);
+        if (reserved == null) {
             return false;
         }
         typeCounters.published.increment();
-        Envelope envelope = new Envelope(snapshot, typeCounters, targets.length == 1);
+        Envelope envelope = new Envelope(snapshot, typeCounters, reserved.length == 1);
         boolean madeReady = false;
-        for (ConsumerChannel target : targets) {
+        for (ConsumerChannel target : reserved) {
             madeReady |= target.enqueue(envelope);
         }
         if (madeReady) {
@@ -300,11 +302,15 @@ final class AsyncEventBus implements EventBus {
 
     /**
      * Reserve a queue slot in every target, or none: waits for room up to the overflow timeout if {@code wait}.
+     * A target that is stalled (its queue full and its notify() not returned for the overflow timeout, see
+     * {@link StallPolicy}) is skipped and the event counted as discarded for it.
      *
-     * @return false when a queue was full and {@code wait} is false (nothing reserved then)
+     * @return the targets with a slot ({@code targets} itself when none was skipped), or null when a queue was
+     *         full and {@code wait} is false (nothing reserved then)
      */
-    private boolean reserveAll(ConsumerChannel[] targets, String eventType, boolean wait) {
+    private ConsumerChannel[] reserveAll(ConsumerChannel[] targets, EventTypeCounters typeCounters, boolean wait) {
         long deadline = 0;
+        boolean[] skip = null;
         for (int i = 0; i < targets.length; i++) {
             ConsumerChannel target = targets[i];
             while (!target.tryReserve()) {
@@ -312,23 +318,45 @@ final class AsyncEventBus implements EventBus {
                     break; // it is leaving; the envelope will be counted as discarded
                 }
                 long now = System.nanoTime();
+                if (target.stalledWhenFull(now, overflowTimeoutNanos)) {
+                    if (skip == null) {
+                        skip = new boolean[targets.length];
+                    }
+                    skip[i] = true;
+                    break;
+                }
                 if (deadline == 0) {
                     deadline = now + overflowTimeoutNanos;
                 }
                 if (!wait || now - deadline >= 0) {
                     for (int j = 0; j < i; j++) {
-                        targets[j].release();
+                        if (skip == null || !skip[j]) {
+                            targets[j].release();
+                        }
                     }
                     if (!wait) {
-                        return false;
+                        return null;
                     }
-                    throw Overflows.queueFull(eventType, target.spec, queueCapacity,
+                    throw Overflows.queueFull(typeCounters.eventType, target.spec, queueCapacity,
                             TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos));
                 }
                 LockSupport.parkNanos(50_000);
             }
         }
-        return true;
+        return skip == null ? targets : withoutSkipped(targets, skip, typeCounters);
+    }
+
+    private static ConsumerChannel[] withoutSkipped(ConsumerChannel[] targets, boolean[] skip,
+            EventTypeCounters typeCounters) {
+        List<ConsumerChannel> kept = new ArrayList<>(targets.length);
+        for (int i = 0; i < targets.length; i++) {
+            if (skip[i]) {
+                targets[i].skipped(typeCounters);
+            } else {
+                kept.add(targets[i]);
+            }
+        }
+        return kept.toArray(new ConsumerChannel[0]);
     }
 
     private EventTypeCounters countersFor(String eventType) {

@@ -1,38 +1,58 @@
 package eu.brain.iot.eventing.impl;
 
+import java.util.List;
 import java.util.Map;
+import java.util.Set;
 
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.EventBusOverflowException;
+import eu.brain.iot.eventing.impl.TextTable.Column;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
 
-/** Gogo commands {@code bus:stats}, {@code bus:behaviours} and {@code bus:publish}. */
+/**
+ * Gogo commands {@code bus:stats}, {@code bus:behaviours} and {@code bus:publish}. Called on the shell's threads;
+ * holds no state of its own.
+ */
 @Component(service = BusCommands.class, property = { "osgi.command.scope=bus", "osgi.command.function=stats",
         "osgi.command.function=behaviours", "osgi.command.function=publish" })
 public final class BusCommands {
 
     static final String PUBLISH_USAGE = "usage: bus:publish TYPE key=value ... (values: 42, 1.5, true, "
-            + "\"two words\"; nested: at.x=3), e.g. bus:publish "
-            + "eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation component=Robot1 position=2 detect=0";
+            + "\"two words\"; nested: at.x=3), e.g. bus:publish eu.brain.iot.behaviours.events.ConnectorTypeDoor "
+            + "(a robot's request to open the warehouse door: the door behaviour, installed on demand if missing, "
+            + "opens the door; no robot is commanded)";
+
+    /**
+     * Widest behaviour and bundle names shown in full; longer ones are cut with an ellipsis. Event type names are
+     * never cut (scripts read them from bus:stats): their column is as wide as the longest.
+     */
+    static final int MAX_BEHAVIOUR_WIDTH = 32;
+    static final int MAX_BUNDLE_WIDTH = 32;
+    static final String STALLED = "stalled";
+    static final String RUNNING = "ok";
 
     private final EventBusStatistics statistics;
     private final EventBus bus;
+    private final BundleContext context;
 
     @Activate
-    public BusCommands(@Reference EventBusStatistics statistics, @Reference EventBus bus) {
+    public BusCommands(@Reference EventBusStatistics statistics, @Reference EventBus bus, BundleContext context) {
         this.statistics = statistics;
         this.bus = bus;
+        this.context = context;
     }
 
     /**
      * Publish an untyped event by hand; typed behaviours that consume the type receive it converted to their
-     * class. Errors come back as a message, not an exception: this is typed by a person.
+     * class. Errors come back as a message, not an exception: this is typed by a person. A type no bundle and no
+     * behaviour knows is refused when known names are near it (a typo, another case), with those names.
      */
     public String publish(String eventType, String... fields) {
         if (eventType.contains("=")) {
@@ -44,37 +64,55 @@ public final class BusCommands {
         } catch (IllegalArgumentException e) {
             return "bus:publish: " + e.getMessage() + "; " + PUBLISH_USAGE;
         }
+        String note = "";
+        if (!KnownEventTypes.consumed(statistics, eventType)) {
+            Set<String> known = KnownEventTypes.all(context, statistics);
+            if (!known.contains(eventType)) {
+                List<String> near = NearestNames.nearest(eventType, known);
+                if (!near.isEmpty()) {
+                    return "bus:publish: no class named " + eventType + " is known on this node (no installed bundle "
+                            + "has it, no behaviour consumes it); did you mean " + String.join(" or ", near)
+                            + "? Nothing was published.";
+                }
+                note = " No class of that name is known on this node (no installed bundle has it, no behaviour "
+                        + "consumes it): the Behaviour Management Service, if any, looks for a behaviour that consumes "
+                        + "it in its repositories (bms:pending, bms:history).";
+            }
+        }
         try {
             bus.deliver(eventType, data);
         } catch (EventBusOverflowException e) {
             return "bus:publish: " + e.getMessage();
         }
-        return "Published " + eventType + " " + data + " (bus:stats counts it, bus:behaviours shows who consumes it)";
+        return "Published " + eventType + " " + data + " (bus:stats counts it, bus:behaviours shows who consumes it)."
+                + note;
     }
 
     /** Counters per event type. */
     public String stats() {
-        StringBuilder out = new StringBuilder(String.format("%-60s %12s %12s %8s %10s %10s %8s%n", "EVENT TYPE",
-                "PUBLISHED", "DELIVERED", "FAILED", "UNHANDLED", "DISCARDED", "HELD"));
+        TextTable table = new TextTable(Column.text("EVENT TYPE", Integer.MAX_VALUE), Column.number("PUBLISHED"),
+                Column.number("DELIVERED"), Column.number("FAILED"), Column.number("UNHANDLED"),
+                Column.number("DISCARDED"), Column.number("HELD"));
         for (EventTypeStatistics s : statistics.eventTypes()) {
-            out.append(String.format("%-60s %12d %12d %8d %10d %10d %8d%n", s.eventType, s.published, s.delivered,
-                    s.failed, s.unhandled, s.discarded, s.held));
+            table.row(s.eventType, s.published, s.delivered, s.failed, s.unhandled, s.discarded, s.held);
         }
-        return out.append(behaviours()).toString();
+        return table + behaviours();
     }
 
-    /** The registered smart behaviours with their queues. */
+    /** The registered smart behaviours with their queues; a stalled one (see the bus's overflow policy) says so. */
     public String behaviours() {
-        StringBuilder out = new StringBuilder(String.format("%-40s %-32s %8s %12s %8s  %s%n", "BEHAVIOUR", "BUNDLE",
-                "QUEUED", "DELIVERED", "FAILED", "CONSUMES"));
+        TextTable table = new TextTable(Column.text("BEHAVIOUR", MAX_BEHAVIOUR_WIDTH),
+                Column.text("BUNDLE", MAX_BUNDLE_WIDTH), Column.number("QUEUED"), Column.number("DELIVERED"),
+                Column.number("FAILED"), Column.number("DISCARDED"), Column.text("STATE", STALLED.length()),
+                Column.text("CONSUMES", Integer.MAX_VALUE));
         for (ConsumerStatistics c : statistics.consumers()) {
             String consumes = c.lastResort ? "(last resort: unhandled events)" : String.join(",", c.consumed);
             if (!c.filter.isEmpty()) {
                 consumes += " where " + c.filter;
             }
-            out.append(String.format("%-40s %-32s %8d %12d %8d  %s%s%n", c.consumer, c.bundle, c.queueDepth,
-                    c.delivered, c.failures, c.untyped ? "[untyped] " : "", consumes));
+            table.row(c.consumer, c.bundle, c.queueDepth, c.delivered, c.failures, c.discarded,
+                    c.stalled ? STALLED : RUNNING, (c.untyped ? "[untyped] " : "") + consumes);
         }
-        return out.toString();
+        return table.toString();
     }
 }

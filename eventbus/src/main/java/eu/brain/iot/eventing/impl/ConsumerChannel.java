@@ -21,8 +21,8 @@ import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
  * so a behaviour is never called twice at once, and since it takes events from one FIFO queue, it sees them in
  * publish order (per publishing thread).
  * <p>
- * Ownership: publishers only append to {@link #queue}, reserve room through {@link #offered} and may take a free
- * token. Everything else ({@link #taken}, the {@link BehaviourCaller} with the behaviour object and its caches)
+ * Ownership: publishers only append to {@link #queue}, reserve room through {@link #offered}, may take a free
+ * token, and consult the {@link StallPolicy} (its own lock) when the queue is full. Everything else ({@link #taken}, the {@link BehaviourCaller} with the behaviour object and its caches)
  * belongs to the token holder. {@link #runner} is written by the holder's worker and, to interrupt it, by
  * {@link #close}. Once closed, the token is never given back: the last holder discards what is queued and gives
  * the behaviour object back, exactly once.
@@ -59,6 +59,7 @@ final class ConsumerChannel {
     private final DeliveryPool pool;
     private final Logger log;
     private final BehaviourCaller caller;
+    private final StallPolicy stall;
 
     private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
     /** Slots reserved by publishers; incremented before an envelope is queued. */
@@ -87,6 +88,7 @@ final class ConsumerChannel {
         this.pool = pool;
         this.log = log;
         this.caller = new BehaviourCaller(spec, log);
+        this.stall = new StallPolicy(spec, log);
     }
 
     /** Reserve room for one envelope. @return false when the queue is full (nothing reserved then) */
@@ -114,6 +116,19 @@ final class ConsumerChannel {
     /** A new capacity (bus reconfiguration): a lower one only makes publishers wait until the queue drains. */
     void capacity(int capacity) {
         this.capacity = capacity;
+    }
+
+    /**
+     * The queue is full: whether publishers should skip this behaviour because it is stalled (see
+     * {@link StallPolicy}) rather than wait for room.
+     */
+    boolean stalledWhenFull(long now, long timeoutNanos) {
+        return stall.skip(taken.get(), now, timeoutNanos, capacity);
+    }
+
+    /** An event not queued for this behaviour because it is stalled: counted as discarded. */
+    void skipped(EventTypeCounters counters) {
+        stall.skipped(counters);
     }
 
     /** Give back a slot reserved for an event that will not be queued after all. */
@@ -182,6 +197,9 @@ final class ConsumerChannel {
                 }
                 taken.lazySet(taken.get() + 1);
                 caller.call(envelope);
+                if (stall.isStalled()) {
+                    stall.resumed();
+                }
             }
         } finally {
             leaveTurn(worker);
@@ -254,6 +272,8 @@ final class ConsumerChannel {
         s.queueDepth = depth();
         s.delivered = caller.delivered();
         s.failures = caller.failures();
+        s.stalled = stall.isStalled();
+        s.discarded = stall.discarded();
         return s;
     }
 }

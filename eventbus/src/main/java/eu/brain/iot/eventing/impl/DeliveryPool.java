@@ -35,14 +35,23 @@ final class DeliveryPool {
      * @param idleSpinNanos how long an idle worker yields its core before it parks
      * @param stallThresholdNanos how long one {@code notify()} may run before its worker counts as stalled
      * @param keepAliveNanos how long a worker beyond the configured number stays idle before it retires
+     * @param stallWarningNanos how long one {@code notify()} may run before the stall is logged as a warning
      */
-    record Settings(int workers, long idleSpinNanos, long stallThresholdNanos, long keepAliveNanos) {
+    record Settings(int workers, long idleSpinNanos, long stallThresholdNanos, long keepAliveNanos,
+            long stallWarningNanos) {
         Settings {
-            if (workers < 1 || stallThresholdNanos <= 0 || keepAliveNanos <= 0) {
+            if (workers < 1 || stallThresholdNanos <= 0 || keepAliveNanos <= 0 || stallWarningNanos <= 0) {
                 throw new IllegalArgumentException("invalid delivery settings " + workers + " workers, stall "
-                        + "threshold " + stallThresholdNanos + " ns, keep-alive " + keepAliveNanos + " ns");
+                        + "threshold " + stallThresholdNanos + " ns, keep-alive " + keepAliveNanos + " ns, stall "
+                        + "warning " + stallWarningNanos + " ns");
             }
             idleSpinNanos = Math.max(0, idleSpinNanos);
+        }
+
+        /** With the default stall warning ({@link BusConfig#stall_warning_ms()}). */
+        Settings(int workers, long idleSpinNanos, long stallThresholdNanos, long keepAliveNanos) {
+            this(workers, idleSpinNanos, stallThresholdNanos, keepAliveNanos,
+                    java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(BusConfig.DEFAULT_STALL_WARNING_MS));
         }
     }
 
@@ -69,7 +78,7 @@ final class DeliveryPool {
     DeliveryPool(Settings settings, Logger log) {
         this.settings = settings;
         this.log = log;
-        this.watchdog = new StallWatchdog(this, settings.stallThresholdNanos(), log);
+        this.watchdog = new StallWatchdog(this, settings.stallThresholdNanos(), settings.stallWarningNanos(), log);
     }
 
     /** Start the configured number of workers and the watchdog. */
@@ -94,7 +103,7 @@ final class DeliveryPool {
     void reconfigure(Settings newSettings) {
         int before = settings.workers();
         settings = newSettings;
-        watchdog.threshold(newSettings.stallThresholdNanos());
+        watchdog.threshold(newSettings.stallThresholdNanos(), newSettings.stallWarningNanos());
         if (newSettings.workers() > before) {
             ensureWorkers();
         } else if (newSettings.workers() < before) {

@@ -73,7 +73,8 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
         int workers = config.delivery_workers() > 0 ? config.delivery_workers()
                 : Math.max(2, processors);
         return new DeliveryPool.Settings(workers, TimeUnit.MICROSECONDS.toNanos(config.idle_spin_us()),
-                TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_threshold_ms())), WORKER_KEEP_ALIVE_NANOS);
+                TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_threshold_ms())), WORKER_KEEP_ALIVE_NANOS,
+                TimeUnit.MILLISECONDS.toNanos(Math.max(1, config.stall_warning_ms())));
     }
 
     @Modified

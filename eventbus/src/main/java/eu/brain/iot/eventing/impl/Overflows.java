@@ -18,8 +18,8 @@ final class Overflows {
             long waitedMillis) {
         return new EventBusOverflowException(eventType, consumer.name(), "Event of type " + eventType
                 + " not delivered: the queue of smart behaviour " + consumer.name() + " (bundle " + consumer.bundle()
-                + ") stayed full (" + capacity + " events) for " + waitedMillis + " ms. That behaviour is too slow "
-                + "or blocked; publish more slowly (or with tryDeliver, which never waits), fix it, or raise "
+                + ") stayed full (" + capacity + " events) for " + waitedMillis + " ms. That behaviour takes events, "
+                + "but more slowly than they come; publish more slowly (or with tryDeliver, which never waits), fix it, or raise "
                 + "queue.capacity in configuration PID " + BusConfig.PID + ".");
     }
 

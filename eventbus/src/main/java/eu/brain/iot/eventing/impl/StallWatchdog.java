@@ -28,7 +28,8 @@ import org.osgi.service.log.Logger;
  * without progress under load). See {@link ThreadActivity}.
  * <p>
  * The worker's thread is renamed after the stalled behaviour while it is stalled, so that a thread dump
- * shows who holds it, and the first stall of each behaviour is logged.
+ * shows who holds it. A stall is logged (once per behaviour) only when the call has lasted the warning time
+ * ({@code stall.warning.ms}): shorter ones are ordinary at a behaviour's first events (activation, class loading).
  * <p>
  * Costs: the workers write nothing for the watchdog on the event path (it reads the channel's {@code taken}
  * count); they write their current turn twice per turn. When no worker has been busy for a second, the
@@ -70,6 +71,8 @@ final class StallWatchdog implements Runnable {
     private final DeliveryPool pool;
     /** Changed in place by a reconfiguration of the bus ({@link #threshold}); read by the watchdog thread. */
     private volatile long thresholdNanos;
+    /** How long one call lasts before its stall is logged; changed in place like the threshold. */
+    private volatile long warningNanos;
     private volatile long tickNanos;
     private final Logger log;
     private final Thread thread;
@@ -77,9 +80,10 @@ final class StallWatchdog implements Runnable {
     private final Set<ConsumerChannel> logged = Collections.newSetFromMap(new WeakHashMap<>());
     private volatile boolean asleep;
 
-    StallWatchdog(DeliveryPool pool, long thresholdNanos, Logger log) {
+    StallWatchdog(DeliveryPool pool, long thresholdNanos, long warningNanos, Logger log) {
         this.pool = pool;
         this.thresholdNanos = thresholdNanos;
+        this.warningNanos = warningNanos;
         this.tickNanos = Math.max(MIN_TICK_NANOS, thresholdNanos / 2);
         this.log = log;
         this.thread = new Thread(this, "brain-iot-bus-watchdog");
@@ -90,10 +94,11 @@ final class StallWatchdog implements Runnable {
         thread.start();
     }
 
-    /** A new stall threshold, applied from the next inspection on. */
-    void threshold(long newThresholdNanos) {
+    /** A new stall threshold and warning time, applied from the next inspection on. */
+    void threshold(long newThresholdNanos, long newWarningNanos) {
         tickNanos = Math.max(MIN_TICK_NANOS, newThresholdNanos / 2);
         thresholdNanos = newThresholdNanos;
+        warningNanos = newWarningNanos;
         LockSupport.unpark(thread);
     }
 
@@ -152,10 +157,13 @@ final class StallWatchdog implements Runnable {
                 watch.taken = taken;
                 watch.since = now;
                 watch.cpuSince = NOT_TAKEN;
-            } else if (!watch.stalled) {
+            } else {
                 watch.since = Math.min(now, watch.since + lateNanos);
-                if (held(worker.thread, watch, now)) {
-                    stalled(worker, channel, now - watch.since);
+                if (!watch.stalled && held(worker.thread, watch, now)) {
+                    stalled(worker, channel);
+                }
+                if (watch.stalled && now - watch.since >= warningNanos && logged.add(channel)) {
+                    warn(channel, now - watch.since);
                 }
             }
             if (watch.stalled) {
@@ -190,15 +198,17 @@ final class StallWatchdog implements Runnable {
                 || ThreadActivity.cpuNanos(thread) - watch.cpuSince >= thresholdNanos;
     }
 
-    private void stalled(DeliveryWorker worker, ConsumerChannel channel, long forNanos) {
+    private void stalled(DeliveryWorker worker, ConsumerChannel channel) {
         worker.watch.stalled = true;
         worker.thread.setName("brain-iot-bus[" + channel.spec.name() + "] stalled in notify(), " + worker.name());
-        if (logged.add(channel)) {
-            log.warn("Smart behaviour {} (bundle {}) has been inside one notify() call for {} ms; the event bus "
-                    + "started another delivery worker so that the other behaviours keep receiving. Its own "
-                    + "events wait in its queue until it returns. Further stalls of this behaviour are not logged.",
-                    channel.spec.name(), channel.spec.bundle(), TimeUnit.NANOSECONDS.toMillis(forNanos));
-        }
+    }
+
+    /** Once per behaviour: it has held its worker for the warning time (a stall, not ordinary start-up work). */
+    private void warn(ConsumerChannel channel, long forNanos) {
+        log.warn("Smart behaviour {} (bundle {}) has been inside one notify() call for {} ms (stall.warning.ms); "
+                + "the event bus started another delivery worker so that the other behaviours keep receiving. Its "
+                + "own events wait in its queue until it returns. Further stalls of this behaviour are not logged.",
+                channel.spec.name(), channel.spec.bundle(), TimeUnit.NANOSECONDS.toMillis(forNanos));
     }
 
     /** The worker has left the turn it was seen in: it is not stalled (any more). */

@@ -51,9 +51,13 @@ class StallWatchdogTest {
         bus.close();
     }
 
+    /** How long a call lasts before its stall is logged, in these tests. */
+    static final long WARNING_MILLIS = 300;
+
     private AsyncEventBus bus(long thresholdMillis) {
         bus = new AsyncEventBus("node", 1_000, 5_000, new DeliveryPool.Settings(1, 0,
-                TimeUnit.MILLISECONDS.toNanos(thresholdMillis), TimeUnit.MILLISECONDS.toNanos(200)), log.logger);
+                TimeUnit.MILLISECONDS.toNanos(thresholdMillis), TimeUnit.MILLISECONDS.toNanos(200),
+                TimeUnit.MILLISECONDS.toNanos(WARNING_MILLIS)), log.logger);
         return bus;
     }
 
@@ -77,7 +81,8 @@ class StallWatchdogTest {
         await("the stalled worker named after the behaviour").atMost(DEADLINE)
                 .until(() -> threadNamed("brain-iot-bus[blocker#1] stalled in notify()"));
         await("another worker").atMost(DEADLINE).until(() -> bus.workerCount() == 2);
-        assertThat(log.count("warn", "has been inside one notify() call")).isEqualTo(1);
+        await("the stall logged once it lasted the warning time").atMost(DEADLINE)
+                .until(() -> log.count("warn", "has been inside one notify() call") == 1);
 
         blocker.open.countDown();
         await("the name given back once it returns").atMost(DEADLINE)
@@ -89,6 +94,34 @@ class StallWatchdogTest {
         bus.deliver(new Tick());
         await().atMost(DEADLINE).until(() -> again.calls.get() == 2); // open: returns at once
         assertThat(log.count("warn", "has been inside one notify() call")).isEqualTo(1);
+    }
+
+    @Test
+    void aCallShorterThanTheWarningTimeGetsAnotherWorkerButNoWarning() throws Exception {
+        bus(5);
+        CountDownLatch done = new CountDownLatch(1);
+        java.util.concurrent.atomic.AtomicBoolean sawAnotherWorker = new java.util.concurrent.atomic.AtomicBoolean();
+        add(1, "starting#1", (SmartBehaviour<Tick>) e -> {
+            // ordinary start-up work (waiting on class loading, a lock, I/O), shorter than the warning time: it
+            // waits until the watchdog has started another worker for it, or for half the warning time
+            long until = System.nanoTime() + TimeUnit.MILLISECONDS.toNanos(WARNING_MILLIS / 2);
+            while (System.nanoTime() < until && !sawAnotherWorker.get()) {
+                sawAnotherWorker.set(bus.workerCount() == 2);
+                try {
+                    Thread.sleep(2);
+                } catch (InterruptedException ie) {
+                    Thread.currentThread().interrupt();
+                    return;
+                }
+            }
+            done.countDown();
+        });
+        bus.deliver(new Tick());
+        assertThat(done.await(DEADLINE.toMillis(), TimeUnit.MILLISECONDS)).isTrue();
+        assertThat(sawAnotherWorker).as("the watchdog started another worker while it was in its call").isTrue();
+        await("the extra worker retires once idle").atMost(DEADLINE).until(() -> bus.workerCount() == 1);
+        assertThat(log.count("warn", "has been inside one notify() call")).as("not a stall worth a warning")
+                .isZero();
     }
 
     @Test

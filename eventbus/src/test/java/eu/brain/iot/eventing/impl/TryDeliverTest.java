@@ -1,7 +1,6 @@
 package eu.brain.iot.eventing.impl;
 
 import static org.assertj.core.api.Assertions.assertThat;
-import static org.assertj.core.api.Assertions.assertThatThrownBy;
 import static org.awaitility.Awaitility.await;
 
 import java.time.Duration;
@@ -17,7 +16,6 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
 
 import eu.brain.iot.eventing.api.BrainIoTEvent;
-import eu.brain.iot.eventing.api.EventBusOverflowException;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
@@ -96,7 +94,7 @@ class TryDeliverTest {
     }
 
     @Test
-    void aFullQueueIsRefusedAtOnceAndForEveryConsumerWhileDeliverWaitsAndThrows() throws Exception {
+    void aFullQueueIsRefusedAtOnceAndForEveryConsumer() throws Exception {
         Gate gate = new Gate();
         add(gate);
         int next = fill(gate);
@@ -123,28 +121,6 @@ class TryDeliverTest {
             assertThat(s.published).as("refused events are not counted as published").isEqualTo(next + 1);
             assertThat(s.discarded).isZero();
         });
-    }
-
-    @Test
-    void deliverStillWaitsForRoomAndThenThrows() throws Exception {
-        AsyncEventBus impatient = new AsyncEventBus("node", CAPACITY, 50, new DeliveryPool.Settings(2,
-                TimeUnit.MICROSECONDS.toNanos(50), TimeUnit.MILLISECONDS.toNanos(5), TimeUnit.SECONDS.toNanos(1)),
-                log.logger);
-        try {
-            Gate gate = new Gate();
-            impatient.addConsumer(new ConsumerSpec(1, "gate#1", "test.bundle", Set.of(Tick.class.getName()), null,
-                    false, false, BehaviourHandle.of(gate), className -> null));
-            impatient.deliver(new Tick(0));
-            assertThat(gate.entered.await(DEADLINE.toMillis(), TimeUnit.MILLISECONDS)).isTrue();
-            for (int seq = 1; seq <= CAPACITY; seq++) {
-                impatient.deliver(new Tick(seq));
-            }
-            assertThatThrownBy(() -> impatient.deliver(new Tick(99))).isInstanceOf(EventBusOverflowException.class)
-                    .hasMessageContaining("stayed full").hasMessageContaining("tryDeliver");
-            gate.release.countDown();
-        } finally {
-            impatient.close();
-        }
     }
 
     @Test

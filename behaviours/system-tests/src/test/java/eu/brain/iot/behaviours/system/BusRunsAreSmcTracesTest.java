@@ -77,7 +77,7 @@ class BusRunsAreSmcTracesTest {
             env = new Random(seed);
             bus = new RecordingBus(interleaved ? new Random(seed * 31 + 7) : null);
             Map<String, Object> trace = Map.of("trace", true);
-            robots = new RobotBehaviorBehaviour(bus, new RobotExterns(), trace);
+            robots = new RobotBehaviorBehaviour(bus, RobotExterns.withoutFleet(), trace);
             door = new DoorBehaviorBehaviour(bus, new DoorExterns(), trace);
             orchestrator = new OrchestratorBehaviorBehaviour(bus, new OrchestratorExterns(), trace);
             bus.register(robots);
@@ -146,7 +146,7 @@ class BusRunsAreSmcTracesTest {
         }
 
         BusRunChecker check() {
-            BusRunChecker checker = new BusRunChecker(system, List.of(new RobotExterns(), new DoorExterns(),
+            BusRunChecker checker = new BusRunChecker(system, List.of(RobotExterns.withoutFleet(), new DoorExterns(),
                     new OrchestratorExterns()));
             checker.check(bus.log());
             return checker;
@@ -236,7 +236,7 @@ class BusRunsAreSmcTracesTest {
                 continue;
             }
             log.remove(join);
-            BusRunChecker checker = new BusRunChecker(system, List.of(new RobotExterns(), new DoorExterns(),
+            BusRunChecker checker = new BusRunChecker(system, List.of(RobotExterns.withoutFleet(), new DoorExterns(),
                     new OrchestratorExterns()));
             assertThatThrownBy(() -> checker.check(log)).isInstanceOf(AssertionError.class)
                     .hasMessageContaining("interaction Connector1")
@@ -260,7 +260,7 @@ class BusRunsAreSmcTracesTest {
         }
         assertThat(unload).isNotNegative();
         log.remove(unload); // the robot never left START, yet its next transitions are in the log
-        BusRunChecker checker = new BusRunChecker(system, List.of(new RobotExterns(), new DoorExterns(),
+        BusRunChecker checker = new BusRunChecker(system, List.of(RobotExterns.withoutFleet(), new DoorExterns(),
                 new OrchestratorExterns()));
         assertThatThrownBy(() -> checker.check(log)).isInstanceOf(AssertionError.class)
                 .hasMessageContaining("which the SMC semantics cannot");

@@ -51,7 +51,7 @@ class WarehouseScenarioTest {
     private void start(Map<String, Object> config) {
         bus = new TestBus();
         doorExterns = new DoorExterns();
-        robots = new RobotBehaviorBehaviour(bus, new RobotExterns(), config);
+        robots = new RobotBehaviorBehaviour(bus, RobotExterns.withoutFleet(), config);
         door = new DoorBehaviorBehaviour(bus, doorExterns, config);
         orchestrator = new OrchestratorBehaviorBehaviour(bus, new OrchestratorExterns(), config);
         bus.register(robots);

@@ -77,6 +77,67 @@ class DashboardApiTest {
     }
 
     @Test
+    void servesAFaviconAndDoesNotEchoALongPathWhole() throws Exception {
+        HttpResponse<String> icon = send("GET", "favicon.ico");
+        assertThat(icon.statusCode()).isEqualTo(200);
+        assertThat(icon.headers().firstValue("Content-Type").orElse("")).startsWith("image/svg+xml");
+        assertThat(icon.body()).startsWith("<svg");
+        assertThat(send("GET", "dashboard/").body()).contains("rel=\"icon\"");
+
+        String longName = "a".repeat(6_000);
+        for (String path : new String[] { "dashboard/" + longName + ".js", "dashboard/api/" + longName }) {
+            HttpResponse<String> r = expectError("GET", path, 404, "characters)");
+            assertThat(r.body().length()).isLessThan(1_000);
+        }
+    }
+
+    @Test
+    void aRequestWithTwoOriginHeadersIsRefused() throws Exception {
+        String origin = "http://" + node.base().getHost() + ":" + node.base().getPort();
+        try (java.net.Socket s = new java.net.Socket(node.base().getHost(), node.base().getPort())) {
+            s.setSoTimeout(10_000);
+            s.getOutputStream().write(("GET /dashboard/api/snapshot HTTP/1.1\r\nHost: " + node.base().getHost() + ":"
+                    + node.base().getPort() + "\r\nOrigin: " + origin + "\r\nOrigin: http://evil.example\r\n"
+                    + "Connection: close\r\n\r\n").getBytes(StandardCharsets.US_ASCII));
+            String answer = new String(s.getInputStream().readAllBytes(), StandardCharsets.UTF_8);
+            assertThat(answer).startsWith("HTTP/1.1 400 ").contains("2 Origin headers");
+        }
+    }
+
+    @Test
+    void streamsAreCappedSoThatOtherRequestsKeepTheirConnections() throws Exception {
+        int cap = 64; // max.streams' default
+        java.util.List<java.net.Socket> streams = new java.util.ArrayList<>();
+        try {
+            int refused = 0;
+            for (int i = 0; i < cap + 10; i++) {
+                java.net.Socket s = new java.net.Socket(node.base().getHost(), node.base().getPort());
+                s.setSoTimeout(10_000);
+                streams.add(s);
+                s.getOutputStream().write(("GET /dashboard/api/stream HTTP/1.1\r\nHost: " + node.base().getHost()
+                        + ":" + node.base().getPort() + "\r\n\r\n").getBytes(StandardCharsets.US_ASCII));
+                StringBuilder status = new StringBuilder();
+                for (int b; (b = s.getInputStream().read()) >= 0 && b != '\n';) {
+                    status.append((char) b);
+                }
+                if (status.toString().contains(" 503 ")) {
+                    refused++;
+                    s.close();
+                }
+            }
+            // other streams of this test class may be open: at least the 10 over the cap are refused
+            assertThat(refused).isGreaterThanOrEqualTo(10);
+            HttpResponse<String> snapshot = send("GET", "dashboard/api/snapshot");
+            assertThat(snapshot.statusCode()).isEqualTo(200);
+            expectError("GET", "dashboard/api/stream", 503, "max.streams");
+        } finally {
+            for (java.net.Socket s : streams) {
+                s.close();
+            }
+        }
+    }
+
+    @Test
     void resumesAfterTheLastEventIdOrStartsWithASnapshot() throws Exception {
         String snapshotId;
         String deltaId;

@@ -135,7 +135,7 @@ final class Acts {
         try {
             stage = model.act(r.provider(), r.service(), r.resource(), params);
         } catch (UnknownResourceException e) {
-            throw HttpError.notFound(e.getMessage());
+            throw HttpError.notFound(Echo.cut(e.getMessage(), Echo.MAX_MESSAGE_CHARS));
         } catch (IllegalArgumentException e) {
             throw HttpError.about(400, "body", e.getMessage() + "; body received: " + received(params));
         }

@@ -65,7 +65,7 @@ public final class JettySetup implements ConnectorFactory {
         server.setErrorHandler(new JsonErrorHandler());
         Connector[] network = Arrays.stream(server.getConnectors()).filter(c -> !(c instanceof LocalConnector))
                 .toArray(Connector[]::new);
-        ConnectionLimit total = new ConnectionLimit(maxConnections, network);
+        ConnectionLimit total = new LoggedConnectionLimit(maxConnections, log, network);
         PerClientLimit perClient = new PerClientLimit(maxPerClient, log);
         try {
             total.start();

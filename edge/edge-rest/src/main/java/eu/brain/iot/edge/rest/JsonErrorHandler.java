@@ -69,7 +69,7 @@ final class JsonErrorHandler extends ErrorHandler {
     }
 
     private static String servletMessage(int code, String message, HttpServletRequest request) {
-        String uri = request.getRequestURI();
+        String uri = Echo.cut(request.getRequestURI());
         if (code == 404) {
             return "no such path: " + uri + "; the edge's REST API is under " + Route.ROOT + " (GET " + Route.ROOT
                     + " lists its paths)";

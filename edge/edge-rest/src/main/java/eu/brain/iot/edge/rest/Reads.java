@@ -44,7 +44,7 @@ final class Reads {
     }
 
     ProviderSnapshot provider(String id) {
-        return model.provider(id).orElseThrow(() -> HttpError.notFound("no provider '" + id + "'; providers: "
+        return model.provider(id).orElseThrow(() -> HttpError.notFound("no provider '" + Echo.cut(id) + "'; providers: "
                 + model.providers().stream().map(ProviderSnapshot::id).toList()));
     }
 
@@ -65,7 +65,7 @@ final class Reads {
     private ProviderSnapshot service(Route r) {
         ProviderSnapshot p = provider(r.provider());
         if (!serviceNames(p).contains(r.service())) {
-            throw HttpError.notFound(p.id() + " has no service '" + r.service() + "'; services: " + serviceNames(p));
+            throw HttpError.notFound(p.id() + " has no service '" + Echo.cut(r.service()) + "'; services: " + serviceNames(p));
         }
         return p;
     }
@@ -94,7 +94,7 @@ final class Reads {
         }
         List<String> names = new ArrayList<>(p.services().getOrDefault(r.service(), Map.of()).keySet());
         names.addAll(Views.actionNames(actions));
-        throw HttpError.notFound(p.id() + "/" + r.service() + " has no resource '" + r.resource() + "'; resources: "
+        throw HttpError.notFound(p.id() + "/" + r.service() + " has no resource '" + Echo.cut(r.resource()) + "'; resources: "
                 + names);
     }
 }

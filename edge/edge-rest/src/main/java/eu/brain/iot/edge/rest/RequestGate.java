@@ -67,12 +67,7 @@ public final class RequestGate implements Filter, AccessGate {
         hosts = new HostNames(bind, config.allowed_hosts());
         sessions = new Sessions(Duration.ofSeconds(SensinactServlet.positive("session.max.age.s",
                 config.session_max_age_s())));
-        authRequired = switch (config.auth()) {
-            case "auto" -> !loopback(bind);
-            case "token" -> true;
-            default -> throw new IllegalArgumentException("configuration " + RestConfig.PID + ": auth must be 'auto' "
-                    + "(a token when bound to anything but loopback) or 'token' (always), found '" + config.auth() + "'");
-        };
+        authRequired = AuthMode.of(config.auth(), log).tokenRequired(loopback(bind));
         ApiToken t = null;
         String refused = null;
         if (authRequired) {
@@ -170,14 +165,16 @@ public final class RequestGate implements Filter, AccessGate {
             throw new HttpError(503, refusal);
         }
         int port = req.getLocalPort();
+        once(req, "Host");
+        once(req, "Origin");
         String host = req.getHeader("Host");
         if (!hosts.accepts(host, port)) {
-            throw HttpError.about(421, "Host", "Host '" + host + "' is not a name of this server (accepted: "
+            throw HttpError.about(421, "Host", "Host '" + Echo.cut(host) + "' is not a name of this server (accepted: "
                     + hosts.describe(port) + "; configuration allowed.hosts of " + RestConfig.PID + " adds names)");
         }
         String origin = req.getHeader("Origin");
         if (origin != null && !hosts.acceptsOrigin(origin, port)) {
-            throw HttpError.about(403, "Origin", "cross-origin request refused: Origin '" + origin + "' is not this "
+            throw HttpError.about(403, "Origin", "cross-origin request refused: Origin '" + Echo.cut(origin) + "' is not this "
                     + "server (accepted: no Origin, or http:// and one of " + hosts.describe(port) + ")");
         }
         if (authenticate && authRequired && !authenticated(req)) {
@@ -191,6 +188,22 @@ public final class RequestGate implements Filter, AccessGate {
             throw HttpError.about(415, "Content-Type", req.getMethod() + " needs Content-Type: application/json, found "
                     + (req.getContentType() == null ? "none" : "'" + req.getContentType() + "'")
                     + " (with curl: -H 'Content-Type: application/json')");
+        }
+    }
+
+    /**
+     * A header this gate decides on must come at most once: with two, a server and a proxy or browser in front of
+     * it could each read another one.
+     */
+    private static void once(HttpServletRequest req, String header) {
+        java.util.Enumeration<String> values = req.getHeaders(header);
+        int count = 0;
+        while (values != null && values.hasMoreElements()) {
+            values.nextElement();
+            count++;
+        }
+        if (count > 1) {
+            throw HttpError.closing(400, header, "the request has " + count + " " + header + " headers; send one");
         }
     }
 

@@ -27,6 +27,10 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
     @AttributeDefinition(description = "Changes an SSE client may have waiting; one more and it is disconnected as too slow")
     int sse_queue_capacity() default 1_024;
 
+    @AttributeDefinition(description = "SSE streams (/sensinact/subscribe) open at most, all clients together; "
+            + "more are answered 503. Keeps connections (max.connections) free for ordinary requests")
+    int sse_max_streams() default 256;
+
     @AttributeDefinition(description = "Time between two heartbeat comments on every SSE stream (milliseconds); "
             + "a write that fails tells a client that went away")
     long sse_heartbeat_ms() default 15_000;

@@ -63,18 +63,18 @@ record Route(Kind kind, String path, String provider, String service, String res
     }
 
     private static HttpError unknown(String path) {
-        return HttpError.notFound("no such path: " + path + "; paths: " + SHAPES);
+        return HttpError.notFound("no such path: " + Echo.cut(path) + "; paths: " + SHAPES);
     }
 
     /** @throws HttpError 405 when this kind of path does not take the method */
     void checkMethod(String method) {
         boolean read = method.equals("GET") || method.equals("HEAD");
         if (kind == Kind.ACT && !method.equals("POST")) {
-            throw HttpError.methodNotAllowed(method, path, "POST",
+            throw HttpError.methodNotAllowed(method, Echo.cut(path), "POST",
                     "ACT: POST a JSON object of the action's parameters, e.g. {\"x\":9,\"y\":7} for goTo");
         }
         if (kind != Kind.ACT && !read) {
-            throw HttpError.methodNotAllowed(method, path, "GET", kind == Kind.RESOURCE
+            throw HttpError.methodNotAllowed(method, Echo.cut(path), "GET", kind == Kind.RESOURCE
                     ? "to run an action, POST to " + path + "/act" : "this is a read-only view of the device model");
         }
     }

@@ -45,6 +45,7 @@ public final class SubscribeServlet extends HttpServlet {
     private final transient Logger log;
     private final int capacity;
     private final long writeTimeoutMillis;
+    private final transient StreamLimit streams;
     private final transient Set<SseClient> clients = ConcurrentHashMap.newKeySet();
     private final transient ScheduledExecutorService writer = Executors.newSingleThreadScheduledExecutor(r -> {
         Thread t = new Thread(r, "edge-sse");
@@ -61,6 +62,8 @@ public final class SubscribeServlet extends HttpServlet {
         this.capacity = (int) SensinactServlet.positive("sse.queue.capacity", config.sse_queue_capacity());
         long heartbeat = SensinactServlet.positive("sse.heartbeat.ms", config.sse_heartbeat_ms());
         this.writeTimeoutMillis = SensinactServlet.positive("sse.write.timeout.ms", config.sse_write_timeout_ms());
+        this.streams = new StreamLimit((int) SensinactServlet.positive("sse.max.streams", config.sse_max_streams()),
+                "the edge's SSE streams (" + Route.ROOT + "/subscribe)", "sse.max.streams of " + RestConfig.PID, log);
         writer.scheduleAtFixedRate(() -> clients.forEach(SseClient::heartbeat), heartbeat, heartbeat,
                 TimeUnit.MILLISECONDS);
         // a client that stopped reading is found within a quarter of the write timeout after it expires
@@ -81,7 +84,7 @@ public final class SubscribeServlet extends HttpServlet {
             RequestGate.requirePassed(req);
             boolean head = req.getMethod().equals("HEAD");
             if (!req.getMethod().equals("GET") && !head) {
-                throw HttpError.methodNotAllowed(req.getMethod(), req.getRequestURI(), "GET",
+                throw HttpError.methodNotAllowed(req.getMethod(), Echo.cut(req.getRequestURI()), "GET",
                         "a stream of changes as text/event-stream");
             }
             String provider;
@@ -99,7 +102,7 @@ public final class SubscribeServlet extends HttpServlet {
                         + "?provider=robot1&service=position");
             }
             if (provider != null && model.provider(provider).isEmpty()) {
-                throw HttpError.notFound("no provider '" + provider + "'; providers: "
+                throw HttpError.notFound("no provider '" + Echo.cut(provider) + "'; providers: "
                         + model.providers().stream().map(ProviderSnapshot::id).toList());
             }
             if (head) {
@@ -109,6 +112,10 @@ public final class SubscribeServlet extends HttpServlet {
                 resp.setCharacterEncoding("UTF-8");
                 resp.setHeader("Cache-Control", "no-store");
                 return;
+            }
+            if (!streams.tryAcquire()) {
+                resp.setHeader("Retry-After", "10");
+                throw HttpError.closing(503, null, streams.refusal());
             }
             open(req, resp, provider, service);
         } catch (HttpError e) {
@@ -127,8 +134,16 @@ public final class SubscribeServlet extends HttpServlet {
         String filter = "provider=" + (provider == null ? "*" : provider) + ", service="
                 + (service == null ? "*" : service);
         String who = req.getRemoteAddr() + ":" + req.getRemotePort() + " (" + filter + ")";
-        SseClient client = new SseClient(async, writer, capacity, writeTimeoutMillis, who, log,
-                clients::remove);
+        SseClient client;
+        try {
+            client = new SseClient(async, writer, capacity, writeTimeoutMillis, who, log, c -> {
+                clients.remove(c);
+                streams.release(); // once: SseClient calls this once, when it closes
+            });
+        } catch (IOException | RuntimeException e) {
+            streams.release();
+            throw e;
+        }
         clients.add(client);
         client.start("subscribed to " + filter, listener -> model.subscribe(provider, service, listener));
         log.debug("SSE client " + who + " subscribed");
@@ -150,7 +165,7 @@ public final class SubscribeServlet extends HttpServlet {
         for (Enumeration<String> names = req.getParameterNames(); names.hasMoreElements();) {
             String name = names.nextElement();
             if (!PARAMETERS.contains(name)) {
-                throw HttpError.badRequest("unknown query parameter '" + name + "'; " + req.getRequestURI()
+                throw HttpError.badRequest("unknown query parameter '" + Echo.cut(name) + "'; " + Route.ROOT + "/subscribe"
                         + " takes " + PARAMETERS + ", e.g. ?provider=robot1&service=position");
             }
         }

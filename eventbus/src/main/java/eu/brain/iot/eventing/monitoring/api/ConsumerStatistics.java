@@ -26,4 +26,11 @@ public class ConsumerStatistics extends DTO {
     public long delivered;
     /** Events whose handling threw. */
     public long failures;
+    /**
+     * Whether it is stalled: its queue full and its notify() not returned for the bus's overflow timeout; it
+     * takes no events until notify() returns, and those published for it meanwhile are discarded.
+     */
+    public boolean stalled;
+    /** Events discarded for it because it was stalled. */
+    public long discarded;
 }

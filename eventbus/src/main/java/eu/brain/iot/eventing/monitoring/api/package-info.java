@@ -1,6 +1,6 @@
 /** Monitoring of the event bus: statistics per event type and per consumer. */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package eu.brain.iot.eventing.monitoring.api;
 
 import org.osgi.annotation.bundle.Export;

@@ -1,5 +1,8 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
+
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.component.annotations.ReferenceCardinality;
@@ -17,11 +20,14 @@ import eu.brain.iot.behaviours.warehouse.ModelInstance;
  * {@code p < 0} is a cell the orchestrator chose for the robot to step aside to, encoded as
  * {@code -(1 + x + 1000 y)} ({@link #sideStep}); {@code p == 0} (not concerned) does nothing.
  * <p>
- * Without an edge (the model on a bus alone, as in the model-level tests) there is no {@link RobotFleet}: the
- * functions then only log, and {@code liftCart} counts down as the model expects.
+ * Without an edge there is no {@link RobotFleet}: the functions then only log, and {@code liftCart} counts down as
+ * the model expects. On a node (the component) a fleet is expected: a move it cannot make is a warning, once per
+ * robot until the fleet is back. {@link #withoutFleet()} is the model on a bus alone (the model-level tests), where
+ * no fleet is expected and a move only says what it would do.
  * The functions act for the robot of the instance named by the last {@link #bipInstance} on the calling thread:
  * {@code Robot2} of group {@code g4} is robot11 ({@link ModelInstance}).
- * Thread-safe: the fleet reference is volatile, the fleet is thread-safe, the instance is kept per thread.
+ * Thread-safe: the fleet reference is volatile, the fleet is thread-safe, the instance is kept per thread, the robots
+ * warned about are a concurrent set.
  */
 @Component(service = RobotBehaviorExterns.class)
 public class RobotExterns implements RobotBehaviorExterns {
@@ -35,6 +41,24 @@ public class RobotExterns implements RobotBehaviorExterns {
     volatile RobotFleet fleet;
 
     private final ModelInstance instance = new ModelInstance();
+    /** Whether a fleet is expected: a move without one is then a warning. */
+    private final boolean fleetExpected;
+    /** Robots not moved for want of a fleet since it was last there: warned about once each. */
+    private final Set<String> unmoved = ConcurrentHashMap.newKeySet();
+
+    /** The component on a node: it acts on the fleet through the edge. */
+    public RobotExterns() {
+        this(true);
+    }
+
+    private RobotExterns(boolean fleetExpected) {
+        this.fleetExpected = fleetExpected;
+    }
+
+    /** The model on a bus alone, with no fleet by design: moves are only logged as what they would do. */
+    public static RobotExterns withoutFleet() {
+        return new RobotExterns(false);
+    }
 
     @Override
     public void bipInstance(String group, String component) {
@@ -82,9 +106,15 @@ public class RobotExterns implements RobotBehaviorExterns {
             return;
         }
         if (f == null) {
-            LOG.log(System.Logger.Level.WARNING, "{0}: no fleet service (no edge, or being replaced): not "
-                    + "moved; the binding sends it on once it is back", robot(robotId));
+            if (fleetExpected && unmoved.add(robot(robotId))) {
+                LOG.log(System.Logger.Level.WARNING, "{0}: no fleet service (no edge, or being replaced): not "
+                        + "moved; the binding sends it on once it is back (further moves of {0} not made are not "
+                        + "logged until then)", robot(robotId));
+            }
             return;
+        }
+        if (!unmoved.isEmpty()) {
+            unmoved.clear(); // the fleet is back: a new absence is warned about again
         }
         if (aside != null) {
             f.sideStep(robot(robotId), aside);
