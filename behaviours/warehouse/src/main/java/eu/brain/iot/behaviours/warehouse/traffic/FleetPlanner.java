@@ -42,10 +42,8 @@ public final class FleetPlanner {
     private final boolean[] stationary;
     /** Each robot's direction in the passage it stands in (+1 towards end B, -1 towards A, 0 not in one). */
     private final int[] heading;
-    /** Each passage's direction this round ({@link SpaceTimeSearch#directions}). */
-    private final int[] direction;
-    /** The robot whose plan made a passage one-way this round (-1: none, or robots standing in it). */
-    private final int[] claimedBy;
+    /** Who drives through which passage when, this round. */
+    private final PassageClaims claims = new PassageClaims();
     private final boolean[] planned;
     /** The robot standing in each cell now, -1 for none. */
     private final int[] occupant;
@@ -82,9 +80,7 @@ public final class FleetPlanner {
         path = new int[robots][window + 1];
         stationary = new boolean[robots];
         heading = new int[robots];
-        direction = new int[map.passages()];
-        claimedBy = new int[map.passages()];
-        search.directions(direction);
+        search.claims(claims);
         planned = new boolean[robots];
         occupant = new int[map.cells()];
         occupiedBefore = new int[robots];
@@ -173,8 +169,7 @@ public final class FleetPlanner {
                 occupant[c] = -1;
             }
         }
-        Arrays.fill(direction, 0);
-        Arrays.fill(claimedBy, -1);
+        claims.clear();
         for (int r = 0; r < cell.length; r++) {
             heading(r, occupiedBefore[r]);
         }
@@ -251,20 +246,7 @@ public final class FleetPlanner {
             int[] d = distances.to(g);
             heading[r] = d[map.passageExit(run, 1)] <= d[map.passageExit(run, 0)] ? 1 : -1;
         }
-        if (direction[run] == 0) {
-            direction[run] = heading[r];
-        }
-    }
-
-    /** A passage the robot's new plan drives into, free this round, is one-way its way from now on. */
-    private void claimPassages(int r, int[] p) {
-        for (int t = 1; t < p.length; t++) {
-            int run = map.passage(p[t]);
-            if (run >= 0 && direction[run] == 0 && p[t] != p[t - 1]) {
-                direction[run] = SpaceTimeSearch.moveDirection(map, p[t - 1], p[t], run);
-                claimedBy[run] = r;
-            }
-        }
+        claims.add(r, run, heading[r], 0, window); // until its plan says when it leaves
     }
 
     private void progress(int r) {
@@ -294,11 +276,11 @@ public final class FleetPlanner {
             if (planned[r]) {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
-            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until);
+            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r]);
             if (found == null && to != cell[r]) {
                 // no way to the goal through the others: at least make way
                 found = search.find(r, cell[r], cell[r], distances.to(cell[r]), blocked, forbidden,
-                        until);
+                        until, heading[r]);
             }
             if (found == null) {
                 return false;
@@ -308,7 +290,8 @@ public final class FleetPlanner {
                 table.reserve(r, found[t], t);
             }
             planned[r] = true;
-            claimPassages(r, found);
+            claims.remove(r);
+            claims.claim(map, r, found, heading[r]);
             int refused = pushThrough(r, depth);
             if (refused < 0) {
                 return true;
@@ -388,11 +371,10 @@ public final class FleetPlanner {
     private void release(int o) {
         for (int t = 1; t <= window; t++) {
             table.release(o, path[o][t], t);
-            int run = map.passage(path[o][t]);
-            if (run >= 0 && claimedBy[run] == o) {
-                claimedBy[run] = -1;
-                direction[run] = 0;
-            }
+        }
+        claims.remove(o);
+        if (heading[o] != 0) {
+            claims.add(o, map.passage(cell[o]), heading[o], 0, window);
         }
     }
 }

@@ -4,10 +4,11 @@ import java.util.Arrays;
 
 /**
  * One robot's best path over the window through the others' reservations: A* over (cell, step), a step being a
- * move to a neighbour or a wait; each step costs 1 except waiting on the goal, and the window's end adds the
+ * move to a neighbour or a wait; each step costs 1 except waiting on the goal (1 more in a passage, 2 more in front
+ * of a passage's end while robots come out of it), and the window's end adds the
  * distance still to go, so the first node popped at the window's end is the best. Passages (lanes of one-cell width
- * joining two open cells, doorways) are one-way while anyone is in them or planned into them
- * ({@link #directions}), so no robot is ever caught in one by a robot coming the other way. Arrays are
+ * joining two open cells, doorways) are driven one way at a time ({@link PassageClaims}), so no robot is ever caught
+ * in one by a robot coming the other way. Arrays are
  * reused (stamped per search): owned by the planner's thread.
  */
 final class SpaceTimeSearch {
@@ -21,7 +22,9 @@ final class SpaceTimeSearch {
     private final int[] seen;
     private final int[] closed;
     private final int[] banned;
-    private int[] direction;
+    private PassageClaims claims = new PassageClaims();
+    /** Each node's direction in the passage it is in (+1 towards end B, -1 towards A, 0 none). */
+    private final byte[] heading;
     private final int[] bannedUntil;
     private static final int[] NO_CELLS = new int[0];
     private long[] heapKeys = new long[1024];
@@ -42,7 +45,7 @@ final class SpaceTimeSearch {
         seen = new int[nodes];
         closed = new int[nodes];
         banned = new int[cells];
-        direction = new int[map.passages()];
+        heading = new byte[nodes];
         bannedUntil = new int[cells];
     }
 
@@ -57,7 +60,7 @@ final class SpaceTimeSearch {
      *         of the reservations within the search's budget
      */
     int[] find(int robot, int start, int goal, int[] distance, boolean[] blocked) {
-        return find(robot, start, goal, distance, blocked, NO_CELLS, NO_CELLS);
+        return find(robot, start, goal, distance, blocked, NO_CELLS, NO_CELLS, 0);
     }
 
     /**
@@ -65,7 +68,7 @@ final class SpaceTimeSearch {
      * {@code forbidden[i]} before step {@code forbiddenUntil[i] + 1} (it gives the robot standing there time to go).
      */
     int[] find(int robot, int start, int goal, int[] distance, boolean[] blocked, int[] forbidden,
-               int[] forbiddenUntil) {
+               int[] forbiddenUntil, int startHeading) {
         int stamp = ++generation;
         for (int i = 0; i < forbidden.length; i++) {
             banned[forbidden[i]] = stamp;
@@ -76,6 +79,7 @@ final class SpaceTimeSearch {
         seen[startNode] = stamp;
         g[startNode] = 0;
         parent[startNode] = -1;
+        heading[startNode] = (byte) startHeading;
         push(startNode, h(distance, start), 0);
         int budget = maxExpansions;
         while (heapSize > 0 && budget-- > 0) {
@@ -88,63 +92,71 @@ final class SpaceTimeSearch {
             int t = node / cells;
             int cell = node - t * cells;
             if (t == window) {
-                if (cell == goal || !outletAhead(cell)) {
-                    return trace(node);
-                }
-                continue;
+                return trace(node);
             }
             int nt = t + 1;
             int[] next = map.neighbours(cell);
-            boolean mayWait = cell == goal || !outletAhead(cell); // nobody waits where a passage lets robots out
             for (int i = -1; i < next.length; i++) {
                 int n = i < 0 ? cell : next[i];
-                if (i < 0 && !mayWait) {
-                    continue;
-                }
                 if (n != cell && (banned[n] == stamp && nt <= bannedUntil[n]
                         || n != goal && blocked != null && blocked[n])) {
                     continue;
                 }
-                if (distance[n] >= Distances.UNREACHABLE || !oneWay(cell, n) || !table.free(robot, n, nt)) {
+                if (distance[n] >= Distances.UNREACHABLE || !table.free(robot, n, nt)) {
+                    continue;
+                }
+                int dir = passageHeading(robot, cell, n, heading[node], nt);
+                if (dir == 2) {
                     continue;
                 }
                 int child = nt * cells + n;
-                int cost = g[node] + (n == goal && cell == goal ? 0 : 1);
+                // a step in a passage costs one more: robots get out of passages rather than wait in them
+                // and two more where a passage lets robots out (they wait elsewhere, not in front of its end)
+                int cost = g[node] + (n == goal && cell == goal ? 0 : 1) + (map.passage(n) >= 0 ? 1 : 0)
+                        + (outlet(robot, n, nt) ? 2 : 0);
                 if (closed[child] == stamp || (seen[child] == stamp && g[child] <= cost)) {
                     continue;
                 }
                 seen[child] = stamp;
                 g[child] = cost;
                 parent[child] = node;
+                heading[child] = (byte) dir;
                 push(child, cost + h(distance, n), nt);
             }
         }
         return null;
     }
 
+    /** The passages' claims this round (the planner's, read at every search). */
+    void claims(PassageClaims passageClaims) {
+        this.claims = passageClaims;
+    }
+
     /**
-     * Each passage's direction this round: +1 robots drive from end A to end B, -1 from B to A, 0 free (the array is
-     * the planner's, read at every search).
+     * The robot's direction after moving from cell (direction {@code before}) to n at step t, or 2 when the move
+     * would meet a robot coming the other way in a passage.
      */
-    void directions(int[] passageDirections) {
-        this.direction = passageDirections;
-    }
-
-    /** Whether a move from cell to n keeps to the direction of the passage n is in (leaving a passage always may). */
-    private boolean oneWay(int cell, int n) {
-        int run = n == cell ? -1 : map.passage(n);
-        if (run < 0 || direction[run] == 0) {
-            return true;
+    private int passageHeading(int robot, int cell, int n, int before, int t) {
+        int run = map.passage(n);
+        if (run < 0) {
+            return 0;
         }
-        return moveDirection(map, cell, n, run) == direction[run];
+        int dir = n == cell ? before : moveDirection(map, cell, n, run);
+        if (dir == 0) {
+            dir = before != 0 ? before : 1;
+        }
+        return claims.against(robot, run, dir, t) ? 2 : dir;
     }
 
-    /** Whether the cell is where a one-way passage lets robots out (nobody may wait there at the window's end). */
-    private boolean outletAhead(int cell) {
+    /** Whether robots come out of a passage into this cell at step t (nobody may wait there then). */
+    private boolean outlet(int robot, int cell, int t) {
         for (int n : map.neighbours(cell)) {
             int run = map.passage(n);
-            if (run >= 0 && direction[run] != 0 && map.passageExit(run, direction[run] > 0 ? 1 : 0) == cell) {
-                return true;
+            if (run >= 0) {
+                int side = map.passageExit(run, 1) == cell ? 1 : map.passageExit(run, 0) == cell ? 0 : -1;
+                if (side >= 0 && claims.along(robot, run, side == 1 ? 1 : -1, t)) {
+                    return true;
+                }
             }
         }
         return false;

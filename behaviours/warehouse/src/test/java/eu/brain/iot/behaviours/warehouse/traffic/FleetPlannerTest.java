@@ -114,7 +114,7 @@ class FleetPlannerTest {
         assertThat(run.at[0]).as("the offline robot stays").isEqualTo(map.cell(3, 2));
         assertThat(run.planner.held(0)).isTrue();
         run.offline[0] = false;
-        run.goal[0] = map.cell(3, 1);
+        run.goal[0] = map.cell(4, 3);
         int steps = run.runUntil(80, r -> FleetPlanner.NO_GOAL);
         assertThat(run.violations).isEmpty();
         assertThat(steps).as("all through once it is back").isPositive();
