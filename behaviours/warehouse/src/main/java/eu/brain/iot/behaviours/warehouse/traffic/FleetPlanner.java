@@ -50,6 +50,8 @@ public final class FleetPlanner {
     /** The cells {@link #occupant} was filled for in the last round. */
     private final int[] occupiedBefore;
     private static final int MAX_PUSH_DEPTH = 6;
+    /** Search nodes a robot may expand per step of the window (bounds the time of a search that finds no way). */
+    private static final int SEARCH_BUDGET_PER_STEP = 200;
     private static final int MAX_PUSH_RETRIES = 6;
     private boolean[] carts;
     private final Integer[] order;
@@ -67,7 +69,7 @@ public final class FleetPlanner {
         this.map = map;
         this.window = window;
         this.table = new ReservationTable(map.cells(), window);
-        this.search = new SpaceTimeSearch(map, table, 64 * (window + 1) * 5);
+        this.search = new SpaceTimeSearch(map, table, SEARCH_BUDGET_PER_STEP * (window + 1));
         this.distances = new Distances(map, Math.max(64, 4 * robots));
         cell = new int[robots];
         goal = new int[robots];
