@@ -30,6 +30,8 @@ final class OptionsParser {
               --node-config FILE       a .cfg/.config file for the node's Config Admin, e.g. behaviour settings
                                        (repeatable; copied into the run's node configuration folder)
               --no-behaviours          the node gets no behaviour repository: nothing drives the robots
+              --traffic                the fleet's traffic planner drives the robots along reserved paths
+                                       (the robot behaviour's traffic=true; behaviours/README.md, "Traffic")
               --run-dir DIR            the run's folder (scenario/target/runs/<date-time>)
               --report FILE            the JSON report (<run-dir>/report.json)
               --progress SECONDS       wall seconds between two progress lines (2)
@@ -41,7 +43,7 @@ final class OptionsParser {
             "speed", "wait-limit", "deadline", "fault-offline", "stop-behaviour", "node-config", "run-dir", "report",
             "progress", "root");
     private static final Set<String> REPEATABLE = Set.of("fault-offline", "stop-behaviour", "node-config");
-    private static final Set<String> SWITCHES = Set.of("generate", "no-behaviours", "help");
+    private static final Set<String> SWITCHES = Set.of("generate", "no-behaviours", "traffic", "help");
 
     private final Map<String, List<String>> values = new HashMap<>();
     private final Set<String> switches = new java.util.HashSet<>();
@@ -139,7 +141,7 @@ final class OptionsParser {
                 : runDir.resolve("report.json");
         long progressMs = Math.round(decimal("progress", 2, 0.1, 3600) * 1000);
         return new Options(root, map, gen, seed, speed, waitLimitMs, deadlineMs, List.copyOf(faults), runDir, report,
-                progressMs, !switches.contains("no-behaviours"), List.copyOf(nodeConfigs));
+                progressMs, !switches.contains("no-behaviours"), List.copyOf(nodeConfigs), switches.contains("traffic"));
     }
 
     private String text(String name, String fallback) {

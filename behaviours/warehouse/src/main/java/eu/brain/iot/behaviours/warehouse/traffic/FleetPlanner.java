@@ -13,7 +13,7 @@ import java.util.Deque;
  * still never meets anyone, so every round ends with a plan in which no two robots' stays in a cell overlap or
  * follow each other without a free step between (robot-sim's rule).
  * <p>
- * <b>Who goes first</b>: robots inside a passage (they drive on through it, one way), then the robot that has gone longest without coming closer to its goal, then robots carrying a
+ * <b>Who goes first</b>: robots driving along a leg sent earlier ({@link #committed}), robots inside a passage (they drive on through it, one way), then the robot that has gone longest without coming closer to its goal, then robots carrying a
  * cart, then the caller's bias ({@link #bias}, the door batches), then the lower index. A robot that makes no
  * progress thus rises until it is first, and the first robot gets its best path through everyone else's current
  * cells: that is why no robot waits for ever on a map {@link MapCheck} accepts (behaviours/README.md, "Traffic").
@@ -31,6 +31,7 @@ public final class FleetPlanner {
     private final SpaceTimeSearch search;
     private final Distances distances;
     private final int[] cell;
+    private final int[][] committed;
     private final int[] goal;
     private final boolean[] carrying;
     private final boolean[] offline;
@@ -72,6 +73,8 @@ public final class FleetPlanner {
         this.search = new SpaceTimeSearch(map, table, SEARCH_BUDGET_PER_STEP * (window + 1));
         this.distances = new Distances(map, Math.max(64, 4 * robots));
         cell = new int[robots];
+        committed = new int[robots][];
+        Arrays.fill(committed, new int[0]);
         goal = new int[robots];
         carrying = new boolean[robots];
         offline = new boolean[robots];
@@ -120,6 +123,14 @@ public final class FleetPlanner {
         goal[robot] = to;
         carrying[robot] = loaded;
         offline[robot] = isOffline;
+    }
+
+    /**
+     * The leg the robot drives along now (sent earlier): its cells at steps 1, 2, ... of this round, or an empty
+     * array. Robots on a leg are planned first, the leg kept.
+     */
+    public void committed(int robot, int[] cells) {
+        committed[robot] = cells;
     }
 
     /** The cells with a cart on the floor (a robot carrying a cart cannot drive under them). */
@@ -197,6 +208,9 @@ public final class FleetPlanner {
             }
         }
         Arrays.sort(order, 0, count, (a, b) -> {
+            if ((committed[a].length > 0) != (committed[b].length > 0)) {
+                return committed[a].length > 0 ? -1 : 1; // robots driving along a leg first: they cannot stop
+            }
             if ((heading[a] != 0) != (heading[b] != 0)) {
                 return heading[a] != 0 ? -1 : 1; // robots in a passage first: they drive on through it
             }
@@ -278,11 +292,12 @@ public final class FleetPlanner {
             if (planned[r]) {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
-            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r]);
+            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r],
+                    committed[r]);
             if (found == null && to != cell[r]) {
                 // no way to the goal through the others: at least make way
                 found = search.find(r, cell[r], cell[r], distances.to(cell[r]), blocked, forbidden,
-                        until, heading[r]);
+                        until, heading[r], committed[r]);
             }
             if (found == null) {
                 return false;

@@ -69,6 +69,15 @@ final class SpaceTimeSearch {
      */
     int[] find(int robot, int start, int goal, int[] distance, boolean[] blocked, int[] forbidden,
                int[] forbiddenUntil, int startHeading) {
+        return find(robot, start, goal, distance, blocked, forbidden, forbiddenUntil, startHeading, NO_CELLS);
+    }
+
+    /**
+     * As above, the robot's first steps given: {@code committed[i]} is its cell at step i + 1 (a leg it was sent on
+     * and drives along now).
+     */
+    int[] find(int robot, int start, int goal, int[] distance, boolean[] blocked, int[] forbidden,
+               int[] forbiddenUntil, int startHeading, int[] committed) {
         int stamp = ++generation;
         for (int i = 0; i < forbidden.length; i++) {
             banned[forbidden[i]] = stamp;
@@ -98,6 +107,9 @@ final class SpaceTimeSearch {
             int[] next = map.neighbours(cell);
             for (int i = -1; i < next.length; i++) {
                 int n = i < 0 ? cell : next[i];
+                if (t < committed.length && n != committed[t]) {
+                    continue;
+                }
                 if (n != cell && (banned[n] == stamp && nt <= bannedUntil[n]
                         || n != goal && blocked != null && blocked[n])) {
                     continue;
