@@ -17,6 +17,7 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.behaviours.warehouse.traffic.FleetPlanner;
 import eu.brain.iot.behaviours.warehouse.traffic.MapCheck;
 import eu.brain.iot.behaviours.warehouse.traffic.TrafficMap;
+import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.GoToCommand;
 
 /**
@@ -53,12 +54,19 @@ final class TrafficControl {
     /** When each robot was last sent on a leg (a go-to the edge has not shown yet counts as driven along). */
     private final Map<String, Long> legSince = new HashMap<>();
     private final long pendingNanos;
+    /** Looks in a row each robot on a leg stood behind another robot. */
+    private final Map<String, Integer> blockedLooks = new HashMap<>();
+    /** A robot's front sensor: a robot in front ({@code detect} 1). */
+    private static final int BEHIND_A_ROBOT = 1;
+    /** Looks a robot on a leg may stand behind another before its leg is cancelled and planned again. */
+    private static final int BLOCKED_LOOKS = 3;
 
     /** Counters the report reads (any thread). */
     static final class CommandLedgerCounts {
         final AtomicLong reservedGoTos = new AtomicLong();
         final AtomicLong rounds = new AtomicLong();
         final AtomicLong planNanos = new AtomicLong();
+        final AtomicLong cancelledLegs = new AtomicLong();
     }
 
     TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
@@ -121,7 +129,16 @@ final class TrafficControl {
         counts.planNanos.addAndGet(System.nanoTime() - t0);
         counts.rounds.incrementAndGet();
         for (RobotState s : states.values()) {
-            if (s.reachable() && onLeg(s).length == 0) {
+            if (s.reachable() && !s.idle() && s.detect() == BEHIND_A_ROBOT && !s.running()) {
+                if (blockedLooks.merge(s.id(), 1, Integer::sum) >= BLOCKED_LOOKS) {
+                    cancelLeg(s); // its leg met a robot late or early: planned again from where it stands
+                }
+                continue;
+            }
+            blockedLooks.remove(s.id());
+            Cell end = legEnd.get(s.id());
+            boolean legDone = end == null || end.equals(s.cell());
+            if (s.reachable() && s.idle() && (legDone || !pending(s))) {
                 send(s, planner.path(index.get(s.id())));
             }
         }
@@ -148,14 +165,23 @@ final class TrafficControl {
                 names.size(), map.width(), map.height(), map.passages(), window);
     }
 
-    /** The cells still ahead on the leg the robot drives along now (its go-to running), or none. */
+    /**
+     * The cells still ahead on the leg the robot drives along now (its go-to running), or none; a robot busy with
+     * something else (lifting or placing a cart, a go-to not sent by this class) stays where it is for two steps.
+     */
     private int[] onLeg(RobotState s) {
+        Cell sent = legEnd.get(s.id());
+        boolean atGoal = s.cell().equals(goals.get(s.id()));
+        if (!s.idle() && (sent == null || !s.headingFor(sent)) || s.idle() && atGoal) {
+            // busy, or at its goal where the errand's next command (lift, place) is due: nobody pushes it off
+            int here = map.cell(s.cell());
+            return new int[] {here, here};
+        }
         Cell end = legEnd.get(s.id());
         if (end == null || end.equals(s.cell())) {
             return new int[0];
         }
-        boolean pending = System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
-        if (!s.headingFor(end) && !pending) {
+        if (!s.headingFor(end) && !pending(s)) {
             return new int[0];
         }
         int dx = Integer.signum(end.x() - s.cell().x());
@@ -169,6 +195,22 @@ final class TrafficControl {
             cells[i] = map.cell(s.cell().x() + dx * (i + 1), s.cell().y() + dy * (i + 1));
         }
         return cells;
+    }
+
+    private void cancelLeg(RobotState s) {
+        blockedLooks.remove(s.id());
+        legEnd.remove(s.id());
+        legSince.put(s.id(), System.nanoTime());
+        CancelMissionCommand cancel = new CancelMissionCommand();
+        cancel.deviceId = s.id();
+        cancel.missionType = "goto";
+        counts.cancelledLegs.incrementAndGet();
+        commands.send(cancel, "its leg is blocked by another robot: planned again");
+    }
+
+    /** Whether the robot was sent on a leg so recently that the edge may not show the go-to yet. */
+    private boolean pending(RobotState s) {
+        return System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
     }
 
     /** Sends the robot on the straight run of moves its plan starts with, if it moves at once. */
@@ -199,8 +241,8 @@ final class TrafficControl {
     String figures(long goTosSent) {
         long rounds = counts.rounds.get();
         return String.format(java.util.Locale.ROOT, "traffic: %d rounds, planning %.2f ms per round, %d go-tos sent,"
-                + " %d along reserved paths, %d robots held", rounds,
+                + " %d along reserved paths, %d robots held, %d legs cancelled (blocked)", rounds,
                 rounds == 0 ? 0 : counts.planNanos.get() / 1e6 / rounds, goTosSent, counts.reservedGoTos.get(),
-                planner == null ? 0 : planner.fallbacks());
+                planner == null ? 0 : planner.fallbacks(), counts.cancelledLegs.get());
     }
 }

@@ -372,12 +372,15 @@ public final class FleetPlanner {
         planned[r] = true;
         int c = cell[r];
         for (int t = 1; t <= window; t++) {
-            int o;
-            while ((o = table.blocker(r, c, t)) != ReservationTable.NONE) {
-                release(o);
-                planned[o] = false;
-                if (!again.contains(o)) {
-                    again.add(o);
+            for (int s = t - 1; s <= Math.min(window, t + 1); s++) {
+                int o = table.owner(c, s);
+                // step 0 is where robots stand now: two robots seen in one cell (a stale position) release nothing
+                if (o != ReservationTable.NONE && o != r && s >= 1) {
+                    release(o);
+                    planned[o] = false;
+                    if (!again.contains(o)) {
+                        again.add(o);
+                    }
                 }
             }
             table.reserve(r, c, t);

@@ -173,4 +173,22 @@ class FleetPlannerTest {
         assertThat(run.violations).isEmpty();
         assertThat(run.at).containsExactly(map.cell(1, 1), map.cell(2, 1), map.cell(3, 1));
     }
+
+    @Test
+    @org.junit.jupiter.api.Timeout(10)
+    void twoRobotsSeenInOneCellAndBoxedInStillGetAPlan() {
+        // a stale position: the fleet's view can show two robots in one cell for a poll
+        String rows = String.join("\n",
+                "#####",
+                "#...#",
+                "#####");
+        TrafficMap map = TrafficMap.parse(rows);
+        FleetPlanner planner = new FleetPlanner(map, 4, 4);
+        planner.robot(0, map.cell(1, 1), map.cell(3, 1), false, false);
+        planner.robot(1, map.cell(1, 1), map.cell(3, 1), false, false);
+        planner.robot(2, map.cell(2, 1), map.cell(1, 1), false, false);
+        planner.robot(3, map.cell(3, 1), map.cell(1, 1), false, false);
+        planner.plan();
+        assertThat(planner.path(2)[1]).isEqualTo(map.cell(2, 1));
+    }
 }
