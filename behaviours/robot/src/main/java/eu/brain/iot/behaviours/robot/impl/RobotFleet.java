@@ -438,7 +438,7 @@ public final class RobotFleet {
         }
         traffic.step();
         long now = System.nanoTime();
-        if (now - lastFigures > pendingNanos * 25) {
+        if (now - lastFigures > pendingNanos * 3) {
             lastFigures = now;
             LOG.log(System.Logger.Level.INFO, traffic.figures(goTos.get() + traffic.counts().reservedGoTos.get()));
         }

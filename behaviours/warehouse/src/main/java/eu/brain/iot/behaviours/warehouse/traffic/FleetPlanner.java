@@ -292,6 +292,7 @@ public final class FleetPlanner {
             if (planned[r]) {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
+            search.depth(depth);
             int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r],
                     committed[r]);
             if (found == null && to != cell[r]) {

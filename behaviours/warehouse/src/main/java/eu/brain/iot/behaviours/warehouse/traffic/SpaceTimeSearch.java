@@ -17,6 +17,7 @@ final class SpaceTimeSearch {
     private final int window;
     private final int cells;
     private final int maxExpansions;
+    private int depthHint;
     private final int[] g;
     private final int[] parent;
     private final int[] seen;
@@ -90,7 +91,7 @@ final class SpaceTimeSearch {
         parent[startNode] = -1;
         heading[startNode] = (byte) startHeading;
         push(startNode, h(distance, start), 0);
-        int budget = maxExpansions;
+        int budget = maxExpansions / (1 + 3 * Math.min(1, depthHint));
         while (heapSize > 0 && budget-- > 0) {
             int node = pop();
             if (closed[node] == stamp) {
@@ -137,6 +138,11 @@ final class SpaceTimeSearch {
             }
         }
         return null;
+    }
+
+    /** How deep in a chain of pushes the next searches are (a pushed robot needs a way out, not the best path). */
+    void depth(int depth) {
+        this.depthHint = depth;
     }
 
     /** The passages' claims this round (the planner's, read at every search). */
