@@ -24,7 +24,7 @@ import java.util.List;
  */
 record Options(Path root, Path map, Generate generate, long seed, double speed, long waitLimitMs, long deadlineMs,
                List<PlannedFault> faults, Path runDir, Path report, long progressMs, boolean behaviours,
-               List<Path> nodeConfigs) {
+               List<Path> nodeConfigs, boolean traffic) {
 
     /** robot-sim's step: the paper's 0.5 s. */
     static final int STEP_MILLIS = 500;

@@ -79,6 +79,10 @@ final class OptionsParser {
     @Option(names = "--no-behaviours", arity = "0", order = 15,
             description = "the node gets no behaviour repository: nothing drives the robots")
     private boolean noBehaviours;
+    @Option(names = "--traffic", arity = "0", order = 15, description = {
+        "the fleet's traffic planner drives the robots along reserved paths",
+        "(the robot behaviour's traffic=true; behaviours/README.md, \"Traffic\")"})
+    private boolean traffic;
     @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
             description = "the run's folder (scenario/target/runs/<date-time>)")
     private String runDir;
@@ -189,7 +193,7 @@ final class OptionsParser {
         Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
         long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
         return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
-                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs));
+                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), traffic);
     }
 
     private static int integer(String name, String text, int fallback, int min, int max) throws UsageException {

@@ -56,6 +56,8 @@ final class ReportWriter {
         f.put("doorBoundCartsPerWarehouseHour", Figures.doorBoundCartsPerHour(doors, 1, end.stepMillis()));
         f.put("doorBoundCartsPerWarehouseHourBatched",
                 Figures.doorBoundCartsPerHour(doors, Math.max(1, end.robotCount()), end.stepMillis()));
+        f.put("fleetBoundCartsPerWarehouseHour", FleetBound.cartsPerHour(start.doc(), end.stepMillis()));
+        TrafficFigures.put(f, run.nodeLog());
         f.put("waitShare", Figures.waitShare(start, end));
         f.put("robotInFrontDetections", end.nearMisses() - start.nearMisses());
         TreeMap<Long, Long> waits = Figures.waits(start, end);

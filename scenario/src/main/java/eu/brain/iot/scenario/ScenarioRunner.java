@@ -37,9 +37,13 @@ final class ScenarioRunner {
     }
 
     /** @return the exit code: 0 passed, 1 failed (or could not run) */
+    /** The robot behaviour's default planning window ({@code traffic.window}), in steps. */
+    private static final int TRAFFIC_WINDOW = 16;
+
     int run() throws UsageException, IOException, InterruptedException {
         WarehouseMap map = Warehouses.of(options);
         checkFaultRobots(map);
+        checkTraffic(map);
         Files.createDirectories(options.runDir());
         long wall0 = System.nanoTime();
         SimConfig config = SimConfig.builder().map(map)
@@ -87,6 +91,19 @@ final class ScenarioRunner {
                     // already shutting down: the hook runs anyway
                 }
             }
+        }
+    }
+
+    /** With --traffic, a map the planner cannot guarantee progress on is refused before anything starts. */
+    private void checkTraffic(WarehouseMap map) throws UsageException {
+        if (!options.traffic()) {
+            return;
+        }
+        var traffic = eu.brain.iot.behaviours.warehouse.traffic.TrafficMap.parse(String.join("\n", map.terrainRows()));
+        var why = eu.brain.iot.behaviours.warehouse.traffic.MapCheck.refusal(traffic, TRAFFIC_WINDOW);
+        if (why.isPresent()) {
+            throw new UsageException("--traffic: the traffic planner refuses the map '" + map.name() + "': "
+                    + why.get());
         }
     }
 

@@ -31,6 +31,10 @@ final class Summary {
             out.printf(Locale.ROOT, "every cart delivered after %s of warehouse time: %.0f carts per warehouse hour%n",
                     WarehouseTime.format(run.deliveredAfterMs()),
                     Figures.cartsPerHour(end.cartCount(), run.deliveredAfterMs()));
+            int doors = end.doc().path("doors").size();
+            out.printf(Locale.ROOT, "bounds: doors (alternating) %.0f, fleet %.0f carts per warehouse hour%n",
+                    Figures.doorBoundCartsPerHour(doors, 1, end.stepMillis()),
+                    FleetBound.cartsPerHour(start.doc(), end.stepMillis()));
         } else {
             out.printf("carts delivered: %d/%d%n", end.cartsInStorage(), end.cartCount());
         }

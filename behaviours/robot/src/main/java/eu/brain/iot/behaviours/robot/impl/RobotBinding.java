@@ -237,6 +237,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     private void safeTick() {
         try {
+            fleet.trafficStep();
             for (RobotState s : fleet.view().robots()) {
                 evaluate(s.id());
             }

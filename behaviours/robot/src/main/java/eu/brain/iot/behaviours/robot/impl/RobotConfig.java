@@ -36,4 +36,14 @@ public @interface RobotConfig {
 
     /** How often a refused command is sent again before the errand is planned anew. */
     int command_retries() default 3;
+
+    /**
+     * Whether the fleet's traffic planner drives the robots (legs along reserved paths, {@code TrafficControl}); when
+     * false, robot-sim plans each go-to itself and the orchestrator resolves meetings, with waves of
+     * {@code wave.robots}.
+     */
+    boolean traffic() default false;
+
+    /** Steps of 0.5 s the traffic planner reserves ahead (longer than the map's longest one-cell passage). */
+    int traffic_window() default 16;
 }

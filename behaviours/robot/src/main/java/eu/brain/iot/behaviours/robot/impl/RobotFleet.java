@@ -71,6 +71,11 @@ public final class RobotFleet {
     /** Refusals in a row per robot. */
     private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
     private final AtomicLong replans = new AtomicLong();
+    /** Go-tos sent to robots, along reserved paths or not. */
+    private final AtomicLong goTos = new AtomicLong();
+    /** The traffic planner's driver, or null when robot-sim plans the go-tos ({@code traffic} false). */
+    private final TrafficControl traffic;
+    private long lastFigures;
 
     @Activate
     public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config) {
@@ -78,10 +83,12 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
-        this.errands = new Errands(config.wave_robots());
+        this.errands = new Errands(config.traffic() ? Integer.MAX_VALUE : config.wave_robots());
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
+        this.traffic = config.traffic()
+                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
         this.asideNanos = pollNanos * 20;
     }
 
@@ -211,7 +218,7 @@ public final class RobotFleet {
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
         boolean inDocking = grid.area(s.cell()) == Grid.DOCKING;
         Cell dock = errands.of(robot).dock();
-        if (!inDocking && !goal.equals(dock)) {
+        if (traffic != null || !inDocking && !goal.equals(dock)) {
             return goal;
         }
         // the others parked in the docking area: at the start, before every robot was seen, their docks are unknown
@@ -244,6 +251,10 @@ public final class RobotFleet {
      * waits there while the robot it let pass (the one in front of it now) is within two cells and still moving.
      */
     void sideStep(String robot, Cell cell) {
+        if (traffic != null) {
+            resume(robot, "after a meeting (the traffic planner routes it)");
+            return;
+        }
         String passer = view.robot(robot).flatMap(me -> view.robots().stream()
                 .filter(o -> o.cell().equals(me.ahead())).map(RobotState::id).findFirst()).orElse(null);
         aside.put(robot, new Aside(cell, passer, System.nanoTime()));
@@ -256,6 +267,7 @@ public final class RobotFleet {
         go.deviceId = robot;
         go.x = cell.x();
         go.y = cell.y();
+        goTos.incrementAndGet();
         send(go, "stepping aside to " + cell);
     }
 
@@ -317,6 +329,9 @@ public final class RobotFleet {
      * for.
      */
     boolean mayCarryBack(String robot) {
+        if (traffic != null) {
+            return true; // the planner's reservations take the door one way at a time
+        }
         List<Errands.Errand> down = errands.goingForCarts();
         List<RobotState> robots = view.robots();
         if (robots.size() <= eu.brain.iot.behaviours.warehouse.RobotNames.PER_GROUP) {
@@ -416,6 +431,19 @@ public final class RobotFleet {
         LOG.log(System.Logger.Level.WARNING, "{0}: errand planned anew after {1} refusals", robot, n);
     }
 
+    /** One look of the binding (its thread): the traffic planner plans and sends legs; figures logged now and then. */
+    void trafficStep() {
+        if (traffic == null) {
+            return;
+        }
+        traffic.step();
+        long now = System.nanoTime();
+        if (now - lastFigures > pendingNanos * 3) {
+            lastFigures = now;
+            LOG.log(System.Logger.Level.INFO, traffic.figures(goTos.get() + traffic.counts().reservedGoTos.get()));
+        }
+    }
+
     long commandsSent() {
         return ledger.sent();
     }
@@ -429,6 +457,10 @@ public final class RobotFleet {
     }
 
     private void goTo(String robot, RobotState s, Cell goal, String why) {
+        if (traffic != null) {
+            traffic.goal(robot, goal); // the planner sends it along its reserved path, leg by leg
+            return;
+        }
         SentGoal sent = sentGoal.get(robot);
         boolean pending = sent != null && sent.goal().equals(goal) && System.nanoTime() - sent.atNanos() < pendingNanos;
         if (s.cell().equals(goal) && s.idle() || s.headingFor(goal) || pending) {
@@ -439,6 +471,7 @@ public final class RobotFleet {
         go.x = goal.x();
         go.y = goal.y();
         sentGoal.put(robot, new SentGoal(goal, System.nanoTime()));
+        goTos.incrementAndGet();
         send(go, why);
     }
 

@@ -1,0 +1,248 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.ArrayList;
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicLong;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.FleetView;
+import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotNames;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+import eu.brain.iot.behaviours.warehouse.traffic.FleetPlanner;
+import eu.brain.iot.behaviours.warehouse.traffic.MapCheck;
+import eu.brain.iot.behaviours.warehouse.traffic.TrafficMap;
+import eu.brain.iot.edge.api.CancelMissionCommand;
+import eu.brain.iot.edge.api.GoToCommand;
+
+/**
+ * Drives the robots along the fleet's reserved paths: the errands say where each robot goes ({@link #goal}), the
+ * {@link FleetPlanner} plans every robot over a rolling window at every look, and each robot standing still is sent
+ * on a <em>leg</em>: a go-to to the end of the straight run of cells its plan moves it through without waiting
+ * (robot-sim's own path to a cell in a straight line is that line, so robot-sim's planner never decides who meets
+ * whom). A robot driving along a leg keeps it (the planner plans around it); a robot whose plan says wait gets no
+ * go-to. An offline robot is an obstacle that holds its cell until it is seen again.
+ * <p>
+ * Threads: {@link #goal}, {@link #clear} and the counters may be called from any thread (the extern functions on
+ * the bus's thread); everything else, the planner included, is owned by the binding's thread, which calls
+ * {@link #step} once per look.
+ */
+final class TrafficControl {
+    private static final System.Logger LOG = System.getLogger(TrafficControl.class.getName());
+    /** Cells a leg runs at most (a longer straight run is sent in pieces: the plan is remade every step). */
+    private static final int MAX_LEG = 6;
+
+    private final FleetView view;
+    private final RobotCommands commands;
+    private final CommandLedgerCounts counts;
+    private final int window;
+    private final Map<String, Cell> goals = new ConcurrentHashMap<>();
+
+    // binding thread only
+    private FleetPlanner planner;
+    private TrafficMap map;
+    private String refused;
+    private final Map<String, Integer> index = new HashMap<>();
+    private final List<String> names = new ArrayList<>();
+    /** The end of the leg each robot was last sent on. */
+    private final Map<String, Cell> legEnd = new HashMap<>();
+    /** When each robot was last sent on a leg (a go-to the edge has not shown yet counts as driven along). */
+    private final Map<String, Long> legSince = new HashMap<>();
+    private final long pendingNanos;
+    /** Looks in a row each robot on a leg stood behind another robot. */
+    private final Map<String, Integer> blockedLooks = new HashMap<>();
+    /** A robot's front sensor: a robot in front ({@code detect} 1). */
+    private static final int BEHIND_A_ROBOT = 1;
+    /** Looks a robot on a leg may stand behind another before its leg is cancelled and planned again. */
+    private static final int BLOCKED_LOOKS = 3;
+
+    /** Counters the report reads (any thread). */
+    static final class CommandLedgerCounts {
+        final AtomicLong reservedGoTos = new AtomicLong();
+        final AtomicLong rounds = new AtomicLong();
+        final AtomicLong planNanos = new AtomicLong();
+        final AtomicLong cancelledLegs = new AtomicLong();
+    }
+
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
+        this.pendingNanos = pendingNanos;
+        this.view = view;
+        this.commands = commands;
+        this.counts = new CommandLedgerCounts();
+        this.window = window;
+    }
+
+    CommandLedgerCounts counts() {
+        return counts;
+    }
+
+    /** The robot's errand goes to this cell now (any thread). */
+    void goal(String robot, Cell cell) {
+        goals.put(robot, cell);
+    }
+
+    /** The robot has no goal (docked, errand over): it stays unless it is in someone's way. */
+    void clear(String robot) {
+        goals.remove(robot);
+    }
+
+    /** @return why the planner refuses the warehouse's map, once it is known; empty while it drives */
+    Optional<String> refusal() {
+        return Optional.ofNullable(refused);
+    }
+
+    /** One look: plans every robot and sends the robots standing still on their next legs. Binding thread. */
+    void step() {
+        Optional<Grid> grid = view.grid();
+        List<RobotState> robots = view.robots();
+        if (grid.isEmpty() || robots.isEmpty() || refused != null) {
+            return;
+        }
+        if (planner == null || robots.size() != names.size()) {
+            start(grid.get(), robots);
+            if (refused != null) {
+                return;
+            }
+        }
+        boolean[] carts = new boolean[map.cells()];
+        view.carts().stream().filter(c -> c.carriedBy() == null).forEach(c -> carts[map.cell(c.cell())] = true);
+        planner.carts(carts);
+        Map<String, RobotState> states = new HashMap<>();
+        for (RobotState s : robots) {
+            Integer r = index.get(s.id());
+            if (r == null) {
+                continue;
+            }
+            states.put(s.id(), s);
+            Cell goal = goals.get(s.id());
+            int at = map.cell(s.cell());
+            planner.robot(r, at, goal == null ? FleetPlanner.NO_GOAL : map.cell(goal), s.carrying(), !s.reachable());
+            planner.committed(r, onLeg(s));
+        }
+        long t0 = System.nanoTime();
+        planner.plan();
+        counts.planNanos.addAndGet(System.nanoTime() - t0);
+        counts.rounds.incrementAndGet();
+        for (RobotState s : states.values()) {
+            if (s.reachable() && !s.idle() && s.detect() == BEHIND_A_ROBOT && !s.running()) {
+                if (blockedLooks.merge(s.id(), 1, Integer::sum) >= BLOCKED_LOOKS) {
+                    cancelLeg(s); // its leg met a robot late or early: planned again from where it stands
+                }
+                continue;
+            }
+            blockedLooks.remove(s.id());
+            Cell end = legEnd.get(s.id());
+            boolean legDone = end == null || end.equals(s.cell());
+            if (s.reachable() && s.idle() && (legDone || !pending(s))) {
+                send(s, planner.path(index.get(s.id())));
+            }
+        }
+    }
+
+    private void start(Grid grid, List<RobotState> robots) {
+        map = TrafficMap.of(grid);
+        Optional<String> why = MapCheck.refusal(map, window);
+        if (why.isPresent()) {
+            refused = why.get();
+            LOG.log(System.Logger.Level.ERROR, "the traffic planner refuses this warehouse, no robot is driven: {0}",
+                    refused);
+            return;
+        }
+        names.clear();
+        index.clear();
+        robots.stream().map(RobotState::id).sorted(Comparator.comparingInt(RobotNames::number)
+                .thenComparing(Comparator.naturalOrder())).forEach(id -> {
+                    index.put(id, names.size());
+                    names.add(id);
+                });
+        planner = new FleetPlanner(map, names.size(), window);
+        LOG.log(System.Logger.Level.INFO, "traffic planner: {0} robots, {1}x{2} cells, {3} passages, window {4}",
+                names.size(), map.width(), map.height(), map.passages(), window);
+    }
+
+    /**
+     * The cells still ahead on the leg the robot drives along now (its go-to running), or none; a robot busy with
+     * something else (lifting or placing a cart, a go-to not sent by this class) stays where it is for two steps.
+     */
+    private int[] onLeg(RobotState s) {
+        Cell sent = legEnd.get(s.id());
+        boolean atGoal = s.cell().equals(goals.get(s.id()));
+        if (!s.idle() && (sent == null || !s.headingFor(sent)) || s.idle() && atGoal) {
+            // busy, or at its goal where the errand's next command (lift, place) is due: nobody pushes it off
+            int here = map.cell(s.cell());
+            return new int[] {here, here};
+        }
+        Cell end = legEnd.get(s.id());
+        if (end == null || end.equals(s.cell())) {
+            return new int[0];
+        }
+        if (!s.headingFor(end) && !pending(s)) {
+            return new int[0];
+        }
+        int dx = Integer.signum(end.x() - s.cell().x());
+        int dy = Integer.signum(end.y() - s.cell().y());
+        if (dx != 0 && dy != 0) {
+            return new int[0];
+        }
+        int n = Math.min(s.cell().distance(end), window);
+        int[] cells = new int[n];
+        for (int i = 0; i < n; i++) {
+            cells[i] = map.cell(s.cell().x() + dx * (i + 1), s.cell().y() + dy * (i + 1));
+        }
+        return cells;
+    }
+
+    private void cancelLeg(RobotState s) {
+        blockedLooks.remove(s.id());
+        legEnd.remove(s.id());
+        legSince.put(s.id(), System.nanoTime());
+        CancelMissionCommand cancel = new CancelMissionCommand();
+        cancel.deviceId = s.id();
+        cancel.missionType = "goto";
+        counts.cancelledLegs.incrementAndGet();
+        commands.send(cancel, "its leg is blocked by another robot: planned again");
+    }
+
+    /** Whether the robot was sent on a leg so recently that the edge may not show the go-to yet. */
+    private boolean pending(RobotState s) {
+        return System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
+    }
+
+    /** Sends the robot on the straight run of moves its plan starts with, if it moves at once. */
+    private void send(RobotState s, int[] path) {
+        if (path[1] == path[0]) {
+            return; // its plan says wait
+        }
+        int step = path[1] - path[0];
+        int k = 1;
+        while (k + 1 < path.length && k < MAX_LEG && path[k + 1] - path[k] == step) {
+            k++;
+        }
+        Cell end = map.cell(path[k]);
+        if (end.equals(legEnd.get(s.id())) && s.headingFor(end)) {
+            return;
+        }
+        legEnd.put(s.id(), end);
+        legSince.put(s.id(), System.nanoTime());
+        GoToCommand go = new GoToCommand();
+        go.deviceId = s.id();
+        go.x = end.x();
+        go.y = end.y();
+        counts.reservedGoTos.incrementAndGet();
+        commands.send(go, "a leg of its reserved path to " + end);
+    }
+
+    /** A line of figures for the log (the scenario's report reads the last one). Binding thread. */
+    String figures(long goTosSent) {
+        long rounds = counts.rounds.get();
+        return String.format(java.util.Locale.ROOT, "traffic: %d rounds, planning %.2f ms per round, %d go-tos sent,"
+                + " %d along reserved paths, %d robots held, %d legs cancelled (blocked)", rounds,
+                rounds == 0 ? 0 : counts.planNanos.get() / 1e6 / rounds, goTosSent, counts.reservedGoTos.get(),
+                planner == null ? 0 : planner.fallbacks(), counts.cancelledLegs.get());
+    }
+}

@@ -1,0 +1,194 @@
+package eu.brain.iot.behaviours.warehouse.traffic;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.Random;
+
+import org.junit.jupiter.api.Test;
+
+class FleetPlannerTest {
+
+    /** A small warehouse of the generator's kind: docks, storage, a wall with one door, the unload area. */
+    static final String SMALL = String.join("\n",
+            "############",
+            "#dddddddddd#",
+            "#..........#",
+            "#ssssssssss#",
+            "#..........#",
+            "#####D######",
+            "#uuuuuuuuuu#",
+            "#uuuuuuuuuu#",
+            "############");
+
+    @Test
+    void reservationsNeverOverlapInSpaceTimeAndEveryRobotKeepsDelivering() {
+        int robots = 10;
+        int[] start = new int[robots];
+        TrafficMap map = TrafficMap.parse(SMALL);
+        for (int r = 0; r < robots; r++) {
+            start[r] = map.cell(1 + r, 1);
+        }
+        PlanRun run = new PlanRun(SMALL, 12, start);
+        Random random = new Random(7);
+        int[] reached = new int[robots];
+        for (int r = 0; r < robots; r++) {
+            run.goal[r] = randomCell(map, random, r % 2 == 0 ? 7 : 3);
+        }
+        run.runUntil(600, r -> {
+            reached[r]++;
+            // errands through the door and back: unload rows (6-7) and storage (row 3) in turn
+            int row = map.cell(run.at[r]) .y() >= 6 ? 3 : 7;
+            return randomCell(map, random, row);
+        });
+        assertThat(run.violations).isEmpty();
+        for (int r = 0; r < robots; r++) {
+            assertThat(reached[r]).as("goals reached by robot " + r).isGreaterThanOrEqualTo(5);
+        }
+    }
+
+    private static int randomCell(TrafficMap map, Random random, int row) {
+        return map.cell(1 + random.nextInt(10), row);
+    }
+
+    @Test
+    void twoRobotsMeetingHeadOnInACorridorPassUsingAPocket() {
+        String corridor = String.join("\n",
+                "#########",
+                "#.......#",
+                "####.####",
+                "#########");
+        PlanRun run = new PlanRun(corridor, 12, 0, 0);
+        run.at[0] = run.cell(1, 1);
+        run.at[1] = run.cell(7, 1);
+        run.goal[0] = run.cell(7, 1);
+        run.goal[1] = run.cell(1, 1);
+        int steps = run.runUntil(60, r -> FleetPlanner.NO_GOAL);
+        assertThat(run.violations).isEmpty();
+        assertThat(steps).as("steps until both swapped ends").isBetween(6, 30);
+    }
+
+    @Test
+    void aDoorIsCrossedBothWaysByQueues() {
+        String rows = String.join("\n",
+                "#########",
+                "#.......#",
+                "#.......#",
+                "####D####",
+                "#.......#",
+                "#.......#",
+                "#########");
+        TrafficMap map = TrafficMap.parse(rows);
+        int[] start = new int[8];
+        for (int i = 0; i < 4; i++) {
+            start[i] = map.cell(2 + i, 1);
+            start[4 + i] = map.cell(2 + i, 5);
+        }
+        PlanRun run = new PlanRun(rows, 12, start);
+        for (int i = 0; i < 4; i++) {
+            run.goal[i] = map.cell(2 + i, 5);
+            run.goal[4 + i] = map.cell(2 + i, 1);
+        }
+        int steps = run.runUntil(200, r -> FleetPlanner.NO_GOAL);
+        assertThat(run.violations).isEmpty();
+        assertThat(steps).as("steps until all eight crossed").isPositive().isLessThan(80);
+    }
+
+    @Test
+    void aRobotOfflineInsideTheDoorIsRoutedAroundUntilItComesBack() {
+        String rows = String.join("\n",
+                "#######",
+                "#.....#",
+                "###D###",
+                "#.....#",
+                "#######");
+        TrafficMap map = TrafficMap.parse(rows);
+        PlanRun run = new PlanRun(rows, 8, map.cell(3, 2), map.cell(1, 1), map.cell(5, 3));
+        run.offline[0] = true;
+        run.goal[1] = map.cell(1, 3);
+        run.goal[2] = map.cell(5, 1);
+        for (int s = 0; s < 30; s++) {
+            run.step();
+            assertThat(run.at[1]).isNotEqualTo(map.cell(3, 2));
+            assertThat(run.at[2]).isNotEqualTo(map.cell(3, 2));
+        }
+        assertThat(run.at[0]).as("the offline robot stays").isEqualTo(map.cell(3, 2));
+        assertThat(run.planner.held(0)).isTrue();
+        run.offline[0] = false;
+        run.goal[0] = map.cell(4, 3);
+        int steps = run.runUntil(80, r -> FleetPlanner.NO_GOAL);
+        assertThat(run.violations).isEmpty();
+        assertThat(steps).as("all through once it is back").isPositive();
+    }
+
+    @Test
+    void aRobotGoingOutMeetsOneComingBackInASingleLaneAndBothComplete() {
+        assertThat(corridorTrips(1)).as("steps until both went out and came back").isPositive();
+    }
+
+    @Test
+    @org.junit.jupiter.api.Disabled("the planner's known limit: two robots each way in a lane with one-cell pockets "
+            + "livelock (they take turns entering and leaving the passages); behaviours/README.md, \"Traffic\"")
+    void robotsGoingOutMeetRobotsComingBackInASingleLaneAndAllComplete() {
+        assertThat(corridorTrips(2)).as("steps until every robot went out and came back").isPositive();
+    }
+
+    private static int corridorTrips(int pairs) {
+        // the itests' corridor: one lane with a pocket below it every six cells
+        String lane = String.join("\n",
+                "###############################",
+                "#.............................#",
+                "######.#####.#####.#####.######",
+                "###############################");
+        TrafficMap map = TrafficMap.parse(lane);
+        assertThat(MapCheck.refusal(map, 16)).isEmpty();
+        int[] start = new int[2 * pairs];
+        for (int i = 0; i < pairs; i++) {
+            start[i] = map.cell(1 + i, 1);
+            start[pairs + i] = map.cell(29 - i, 1);
+        }
+        PlanRun run = new PlanRun(lane, 16, start);
+        int[] trips = new int[start.length];
+        for (int i = 0; i < pairs; i++) {
+            run.goal[i] = map.cell(29 - i, 1);
+            run.goal[pairs + i] = map.cell(1 + i, 1);
+        }
+        int steps = run.runUntil(400, r -> trips[r]++ < 1 ? start[r] : FleetPlanner.NO_GOAL);
+        assertThat(run.violations).isEmpty();
+        return steps;
+    }
+
+    @Test
+    void aRobotBoxedInIsHeldAndNobodyIsPlannedThroughIt() {
+        String rows = String.join("\n",
+                "#####",
+                "#...#",
+                "#####");
+        TrafficMap map = TrafficMap.parse(rows);
+        PlanRun run = new PlanRun(rows, 4, map.cell(1, 1), map.cell(2, 1), map.cell(3, 1));
+        run.goal[0] = map.cell(3, 1);
+        run.goal[2] = map.cell(1, 1);
+        for (int s = 0; s < 10; s++) {
+            run.step();
+        }
+        assertThat(run.violations).isEmpty();
+        assertThat(run.at).containsExactly(map.cell(1, 1), map.cell(2, 1), map.cell(3, 1));
+    }
+
+    @Test
+    @org.junit.jupiter.api.Timeout(10)
+    void twoRobotsSeenInOneCellAndBoxedInStillGetAPlan() {
+        // a stale position: the fleet's view can show two robots in one cell for a poll
+        String rows = String.join("\n",
+                "#####",
+                "#...#",
+                "#####");
+        TrafficMap map = TrafficMap.parse(rows);
+        FleetPlanner planner = new FleetPlanner(map, 4, 4);
+        planner.robot(0, map.cell(1, 1), map.cell(3, 1), false, false);
+        planner.robot(1, map.cell(1, 1), map.cell(3, 1), false, false);
+        planner.robot(2, map.cell(2, 1), map.cell(1, 1), false, false);
+        planner.robot(3, map.cell(3, 1), map.cell(1, 1), false, false);
+        planner.plan();
+        assertThat(planner.path(2)[1]).isEqualTo(map.cell(2, 1));
+    }
+}
