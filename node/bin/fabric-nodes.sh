@@ -23,7 +23,7 @@
 #   --no-shell          one node: no interactive shell (several nodes never have one)
 #
 # Each node gets the configuration PID eu.brain.iot.federation (a .cfg file in DIR/nodeK/config, beside copies of
-# node/config's files): broker.uri, fabric.name, node.name, key.file. The key file is created (32 random bytes,
+# node/config's files): broker.uri, fabric.name, node.name, key.file, state.dir. The key file is created (32 random bytes,
 # base64, mode 600) when missing; every node of a fabric must be given the same one.
 #
 # Exit code: 0 after Ctrl-C/SIGTERM stopped every node, 1 when the broker or a node did not start (its log is
@@ -116,6 +116,7 @@ broker.uri=$2
 fabric.name=$fabric_name
 node.name=$name
 key.file=$key_file
+state.dir=$state_dir/$name/federation
 EOF
 }
 
