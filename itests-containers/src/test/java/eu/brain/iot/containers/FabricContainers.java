@@ -32,6 +32,8 @@ final class FabricContainers implements AutoCloseable {
     static final String ROBOT_SIM = "robot-sim";
     /** The line a node prints when its bus, installer and BMS are up. */
     static final String NODE_READY = "fabric node ready in";
+    /** A node's configuration folder in its container (Apache Felix File Install watches it: .cfg files, bundles). */
+    static final String CONFIG_DIR = "/app/node/config/";
     private static final Duration START_TIMEOUT = Duration.ofMinutes(3);
     /** Heap of each JVM in a container: the fabric's processes need far less; 2 cores, several JVMs. */
     private static final String HEAP = "-Xmx384m";
@@ -79,19 +81,30 @@ final class FabricContainers implements AutoCloseable {
      * @param configFiles file name to content, dropped into the node's configuration folder before it starts
      */
     NodeContainer node(String name, boolean ownsFleet, Map<String, String> configFiles) {
+        return node(name, ownsFleet, configFiles, Map.of());
+    }
+
+    /**
+     * The same, with more files copied into the container before it starts.
+     *
+     * @param files path in the container to the file's content and mode
+     */
+    NodeContainer node(String name, boolean ownsFleet, Map<String, String> configFiles,
+            Map<String, Transferable> files) {
         String fleet = ownsFleet ? "http://" + ROBOT_SIM + ":" + FLEET_PORT + "/" : "http://127.0.0.1:" + NO_FLEET_PORT + "/";
         String token = newToken();
         GenericContainer<?> c = new GenericContainer<>(images.node())
                 .withCommand(HEAP, "-Dgosh.args=--nointeractive", "-Dorg.apache.felix.http.host=0.0.0.0",
                         "-Dorg.osgi.service.http.port=" + HTTP_PORT, "-Dfabric.node.name=" + name,
-                        "-Dfabric.node.root=/app", "-Dfelix.fileinstall.dir=/app/node/config",
+                        "-Dfabric.node.root=/app", "-Dfelix.fileinstall.dir=" + CONFIG_DIR,
                         "-Deu.brain.iot.edge.fleet.url=" + fleet, "-jar", "/app/fabric-node.jar")
                 .withExposedPorts(HTTP_PORT)
                 .withCopyToContainer(Transferable.of(token.getBytes(StandardCharsets.UTF_8), 0600),
                         "/root/.config/brain-iot/" + name + "/api-token")
                 .waitingFor(new LogLineWait("^" + NODE_READY));
         configFiles.forEach((file, content) -> c.withCopyToContainer(
-                Transferable.of(content.getBytes(StandardCharsets.UTF_8), 0644), "/app/node/config/" + file));
+                Transferable.of(content.getBytes(StandardCharsets.UTF_8), 0644), CONFIG_DIR + file));
+        files.forEach((path, content) -> c.withCopyToContainer(content, path));
         return new NodeContainer(name, token, start(name, c));
     }
 
