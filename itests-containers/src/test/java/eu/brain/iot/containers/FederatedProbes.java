@@ -17,7 +17,7 @@ import org.testcontainers.images.builder.Transferable;
 
 /**
  * What the cross-node tests give a node: the federation's configuration (PID {@code eu.brain.iot.federation}), the
- * fabric's key, the probe bundle (this module's jar: {@code eu.brain.iot.containers.probe}), and the probes'
+ * fabric's key, the probe bundle ({@code fabric-probe/target/fabric-probe.jar}), and the probes'
  * configurations; and the counter's lines read back from a node's output.
  */
 final class FederatedProbes {
@@ -40,10 +40,10 @@ final class FederatedProbes {
         byte[] secret = new byte[32];
         new SecureRandom().nextBytes(secret);
         key = (Base64.getEncoder().encodeToString(secret) + "\n").getBytes(StandardCharsets.US_ASCII);
-        probeBundle = Path.of(System.getProperty("containers.probe.bundle", "target/itests-containers.jar"));
+        probeBundle = Path.of(System.getProperty("containers.probe.bundle", "../fabric-probe/target/fabric-probe.jar"));
         if (!Files.isRegularFile(probeBundle)) {
-            throw new IllegalStateException("the probe bundle " + probeBundle + " does not exist: these tests run "
-                    + "after package (mvn -pl itests-containers -am verify)");
+            throw new IllegalStateException("the probe bundle " + probeBundle + " does not exist: build it "
+                    + "(mvn -pl itests-containers -am verify builds it first)");
         }
     }
 
@@ -66,7 +66,7 @@ final class FederatedProbes {
                 "broker.uri=" + FabricContainers.brokerUriInNetwork(), "fabric.name=" + FABRIC, "node.name=" + node,
                 "key.file=" + KEY_PATH, "")));
         if (counts) {
-            files.put("eu.brain.iot.containers.probe.counter.cfg", "file=" + COUNTER_FILE + "\n");
+            files.put("eu.brain.iot.probe.counter.cfg", "file=" + COUNTER_FILE + "\n");
         }
         return files;
     }
@@ -79,7 +79,7 @@ final class FederatedProbes {
 
     /** A publishing run's configuration: its file name in the configuration folder (a factory configuration). */
     static String publisherFile(String run) {
-        return "eu.brain.iot.containers.probe.publisher-" + run + ".cfg";
+        return "eu.brain.iot.probe.publisher-" + run + ".cfg";
     }
 
     static String publisherConfig(String run, long count, int rate) {

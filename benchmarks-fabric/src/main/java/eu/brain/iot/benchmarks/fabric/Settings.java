@@ -6,6 +6,8 @@ import java.util.List;
 /**
  * The benchmark's command line.
  *
+ * @param parts                what to measure: {@code bare} (two bare clients), {@code nodes} (node to node),
+ *                             {@code local} (the local bus of one node)
  * @param brokers              which brokers, in order: {@code embedded}, {@code mosquitto}
  * @param mosquittoUri         a Mosquitto already running (null: the benchmark starts Debian's on a free port)
  * @param floodMessages        messages measured back to back
@@ -16,11 +18,13 @@ import java.util.List;
  * @param root                 the checkout (broker/target/broker.jar)
  * @param work                 scratch folder (brokers' state and logs)
  */
-record Settings(List<String> brokers, String mosquittoUri, int floodMessages, int floodWarmup, int rate,
+record Settings(List<String> parts, List<String> brokers, String mosquittoUri, int floodMessages, int floodWarmup, int rate,
         double latencyWarmupSeconds, double latencySeconds, Path root, Path work) {
 
     static final String USAGE = """
             Usage: java -jar benchmarks-fabric/target/fabric-bench.jar [options]
+              --parts LIST          bare,nodes,local (default all: two bare MQTT clients, node to node, one node's
+                                    local bus); node to node needs the federation bundle in node/target/fabric-node.jar
               --brokers LIST        embedded,mosquitto (default both, in that order)
               --mosquitto-uri URI   a running Mosquitto (default: start Debian's /usr/sbin/mosquitto on a free port)
               --messages N          messages measured back to back (default 200000)
@@ -33,6 +37,7 @@ record Settings(List<String> brokers, String mosquittoUri, int floodMessages, in
             """;
 
     static Settings parse(String[] args) {
+        List<String> parts = List.of("bare", "nodes", "local");
         List<String> brokers = List.of("embedded", "mosquitto");
         String mosquitto = null;
         int messages = 200_000;
@@ -49,6 +54,7 @@ record Settings(List<String> brokers, String mosquittoUri, int floodMessages, in
             }
             String v = args[++i];
             switch (flag) {
+                case "--parts" -> parts = List.of(v.split(","));
                 case "--brokers" -> brokers = List.of(v.split(","));
                 case "--mosquitto-uri" -> mosquitto = BrokerAddress.parse(v).uri();
                 case "--messages" -> messages = positive(flag, v);
@@ -66,8 +72,13 @@ record Settings(List<String> brokers, String mosquittoUri, int floodMessages, in
                 throw new IllegalArgumentException("--brokers takes embedded and mosquitto, found '" + b + "'");
             }
         }
+        for (String p : parts) {
+            if (!List.of("bare", "nodes", "local").contains(p)) {
+                throw new IllegalArgumentException("--parts takes bare, nodes and local, found '" + p + "'");
+            }
+        }
         root = root.toAbsolutePath().normalize();
-        return new Settings(brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, root,
+        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, root,
                 (work == null ? root.resolve("benchmarks-fabric/target/run") : work).toAbsolutePath());
     }
 

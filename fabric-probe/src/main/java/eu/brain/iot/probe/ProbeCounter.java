@@ -1,4 +1,4 @@
-package eu.brain.iot.containers.probe;
+package eu.brain.iot.probe;
 
 import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
 import eu.brain.iot.eventing.api.SmartBehaviour;
@@ -25,7 +25,10 @@ import org.osgi.service.component.annotations.Deactivate;
  * numbers, duplicates, and events out of order (a number lower than one taken before). Each event is appended to the
  * configured file before {@code notify()} returns, and the file is read back at start, so the counts cover the
  * node's restarts. Every 200 ms, when something changed, it prints per run:
- * {@code probe counter: run=R received=N distinct=D duplicates=U outOfOrder=O last=S}.
+ * {@code probe counter: run=R received=N distinct=D duplicates=U outOfOrder=O last=S}; once a run has been quiet
+ * for one such period, its latency over the events taken since this start (receive time minus the event's
+ * {@code sentNanos}) and the receive times of its first and last events:
+ * {@code probe latency: run=R n=N p50Ns=.. p99Ns=.. maxNs=.. firstNs=.. lastNs=..}.
  *
  * <p>Threads: the bus calls {@code notify} (one call at a time per behaviour, but not always on the same thread)
  * and a reporter thread prints: both hold the monitor of this object for the counts and the file.
@@ -43,6 +46,36 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
         long duplicates;
         long outOfOrder;
         long last;
+        long[] latencies = new long[1024];
+        int samples;
+        long firstNanos;
+        long lastNanos;
+        boolean latencyShown = true;
+
+        void sample(long receivedNanos, long sentNanos) {
+            if (samples == 0) {
+                firstNanos = receivedNanos;
+            }
+            lastNanos = receivedNanos;
+            if (samples == latencies.length) {
+                latencies = java.util.Arrays.copyOf(latencies, samples * 2);
+            }
+            latencies[samples++] = receivedNanos - sentNanos;
+            latencyShown = false;
+        }
+
+        String latencyLine(String run) {
+            long[] sorted = java.util.Arrays.copyOf(latencies, samples);
+            java.util.Arrays.sort(sorted);
+            return "probe latency: run=" + run + " n=" + samples + " p50Ns=" + percentile(sorted, 0.50) + " p99Ns="
+                    + percentile(sorted, 0.99) + " maxNs=" + sorted[samples - 1] + " firstNs=" + firstNanos
+                    + " lastNs=" + lastNanos;
+        }
+
+        private static long percentile(long[] sorted, double q) {
+            int i = (int) Math.ceil(q * sorted.length) - 1;
+            return sorted[Math.max(0, Math.min(sorted.length - 1, i))];
+        }
 
         void take(long seq) {
             received++;
@@ -85,7 +118,12 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
 
     @Override
     public synchronized void notify(ProbeEvent event) {
-        runs.computeIfAbsent(event.run, r -> new RunCounts()).take(event.seq);
+        long now = System.nanoTime();
+        RunCounts counts = runs.computeIfAbsent(event.run, r -> new RunCounts());
+        counts.take(event.seq);
+        if (event.sentNanos != 0) {
+            counts.sample(now, event.sentNanos);
+        }
         try {
             out.write(event.run + " " + event.seq + "\n");
             out.flush(); // to the operating system: kept when the process is killed
@@ -96,13 +134,19 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
     }
 
     private synchronized void report() {
-        if (!changed) {
-            return;
+        if (changed) {
+            changed = false;
+            runs.forEach((run, c) -> System.out.println("probe counter: run=" + run + " received=" + c.received
+                    + " distinct=" + c.seen.cardinality() + " duplicates=" + c.duplicates + " outOfOrder="
+                    + c.outOfOrder + " last=" + c.last));
+            return; // the latency waits for a quiet period: sorting the samples while events flow would slow them
         }
-        changed = false;
-        runs.forEach((run, c) -> System.out.println("probe counter: run=" + run + " received=" + c.received
-                + " distinct=" + c.seen.cardinality() + " duplicates=" + c.duplicates + " outOfOrder=" + c.outOfOrder
-                + " last=" + c.last));
+        runs.forEach((run, c) -> {
+            if (!c.latencyShown && c.samples > 0) {
+                c.latencyShown = true;
+                System.out.println(c.latencyLine(run));
+            }
+        });
     }
 
     @Deactivate

@@ -1,4 +1,4 @@
-package eu.brain.iot.containers.probe;
+package eu.brain.iot.probe;
 
 import eu.brain.iot.eventing.api.EventBus;
 import java.util.concurrent.TimeUnit;
@@ -15,8 +15,9 @@ import org.osgi.util.tracker.ServiceTracker;
 
 /**
  * Publishes one run of probe events on this node's bus, once a consumer of them is known here (the federation's
- * forwarder for another node's behaviour: this node runs none), paced at the configured rate. Prints
- * {@code probe publisher: run=R consumer known} then {@code probe publisher: run=R published=N}.
+ * forwarder for another node's behaviour, or a behaviour of this node), paced at the configured rate or back to
+ * back. Prints {@code probe publisher: run=R consumer known} then
+ * {@code probe publisher: run=R published=N startNs=T} (T: {@code System.nanoTime()} before the first event).
  *
  * <p>Threads: one publishing thread per activation, started and stopped (interrupted, joined) by SCR's thread.
  */
@@ -49,11 +50,13 @@ public final class ProbePublisher {
                 tracker.close();
             }
             System.out.println("probe publisher: run=" + run + " consumer known");
-            long interval = TimeUnit.SECONDS.toNanos(1) / Math.max(1, config.rate());
-            long next = System.nanoTime();
+            boolean paced = config.rate() > 0;
+            long interval = paced ? TimeUnit.SECONDS.toNanos(1) / config.rate() : 0;
+            long start = System.nanoTime();
+            long next = start;
             for (long seq = 1; seq <= config.count(); seq++) {
                 long wait = next - System.nanoTime();
-                if (wait > 0) {
+                if (paced && wait > 0) {
                     LockSupport.parkNanos(wait);
                 }
                 if (Thread.currentThread().isInterrupted()) {
@@ -63,10 +66,11 @@ public final class ProbePublisher {
                 ProbeEvent e = new ProbeEvent();
                 e.run = run;
                 e.seq = seq;
+                e.sentNanos = System.nanoTime();
                 bus.deliver(e);
                 next += interval;
             }
-            System.out.println("probe publisher: run=" + run + " published=" + config.count());
+            System.out.println("probe publisher: run=" + run + " published=" + config.count() + " startNs=" + start);
         } catch (InvalidSyntaxException e) {
             throw new IllegalStateException(e);
         } catch (InterruptedException e) {
