@@ -1,0 +1,106 @@
+package eu.brain.iot.benchmarks.fabric;
+
+import java.nio.file.Files;
+import java.util.ArrayList;
+import java.util.List;
+
+/**
+ * {@code java -jar benchmarks-fabric/target/fabric-bench.jar}: for each broker, two bare MQTT 5 clients with QoS 1
+ * and two fabric nodes (each in its own JVM) through it; and one node's local bus. Each: events (messages) per
+ * second back to back, and latency at the paced rate. Prints a Markdown table on standard output, progress on
+ * standard error. Exit code 2 for a bad command line, 1 when a broker or a run failed.
+ */
+public final class FabricBench {
+    /** One line of the table. */
+    private record Line(String what, double perSecond, LatencyStats latency, String problems) {
+    }
+
+    private FabricBench() {
+    }
+
+    public static void main(String[] args) throws Exception {
+        if (List.of(args).contains("--help")) {
+            System.out.print(Settings.USAGE);
+            return;
+        }
+        Settings settings;
+        try {
+            settings = Settings.parse(args);
+        } catch (IllegalArgumentException e) {
+            System.err.println("fabric-bench: " + e.getMessage());
+            System.err.print(Settings.USAGE);
+            System.exit(2);
+            return;
+        }
+        Files.createDirectories(settings.work());
+        String noFederation = settings.parts().contains("nodes")
+                ? NodeToNodeBench.missingFederation(settings.root()) : null;
+        if (noFederation != null) {
+            System.err.println("fabric-bench: node to node skipped: " + noFederation);
+        }
+        List<Line> lines = new ArrayList<>();
+        try {
+            boolean nodes = settings.parts().contains("nodes") && noFederation == null;
+            if (settings.parts().contains("bare") || nodes) {
+                for (String broker : settings.brokers()) {
+                    lines.addAll(runOn(broker, settings, nodes));
+                }
+            }
+            if (settings.parts().contains("local")) {
+                NodeToNodeBench.Row r = new NodeToNodeBench(settings).localBus();
+                lines.add(new Line(r.what(), r.eventsPerSecond(), r.paced(), r.problems()));
+            }
+        } catch (Exception e) {
+            System.err.println("fabric-bench: a run failed: " + e.getMessage());
+            System.exit(1);
+        }
+        System.out.println();
+        System.out.printf("| what | per second, back to back | p50 at %,d/s (ms) | p99 (ms) | max (ms) |%n",
+                settings.rate());
+        System.out.println("|---|---:|---:|---:|---:|");
+        for (Line l : lines) {
+            System.out.printf("| %s | %,.0f | %s | %s | %s |%n", l.what(), l.perSecond(),
+                    LatencyStats.millis(l.latency().p50Nanos()), LatencyStats.millis(l.latency().p99Nanos()),
+                    LatencyStats.millis(l.latency().maxNanos()));
+        }
+        for (Line l : lines) {
+            if (!l.problems().isEmpty()) {
+                System.out.println("note: " + l.what() + ": " + l.problems());
+            }
+        }
+    }
+
+    private static List<Line> runOn(String broker, Settings settings, boolean nodes) throws Exception {
+        if (broker.equals("mosquitto") && settings.mosquittoUri() != null) {
+            return runOn("Mosquitto " + settings.mosquittoUri(), BrokerAddress.parse(settings.mosquittoUri()),
+                    settings, nodes);
+        }
+        try (BrokerProcess b = broker.equals("embedded") ? BrokerProcess.embedded(settings.root(), settings.work())
+                : BrokerProcess.mosquitto(settings.work())) {
+            System.err.println("fabric-bench: " + b.name() + " at " + b.address().uri());
+            return runOn(b.name(), b.address(), settings, nodes);
+        }
+    }
+
+    private static List<Line> runOn(String name, BrokerAddress address, Settings settings, boolean nodes)
+            throws Exception {
+        List<Line> lines = new ArrayList<>();
+        if (settings.parts().contains("bare")) {
+            BareClientsBench.Row r = new BareClientsBench(settings).run(name, address);
+            String problems = "";
+            for (ForkedSubscriber.Result res : List.of(r.flood(), r.paced())) {
+                if (!res.complete() || res.duplicates() > 0 || res.outOfOrder() > 0) {
+                    problems += String.format("%,d received, complete %s, %d duplicates, %d out of order; ",
+                            res.received(), res.complete(), res.duplicates(), res.outOfOrder());
+                }
+            }
+            lines.add(new Line("bare MQTT clients, QoS 1, " + name, r.messagesPerSecond(), r.paced().latency(),
+                    problems));
+        }
+        if (settings.parts().contains("nodes") && nodes) {
+            NodeToNodeBench.Row r = new NodeToNodeBench(settings).acrossNodes(name, address);
+            lines.add(new Line(r.what(), r.eventsPerSecond(), r.paced(), r.problems()));
+        }
+        return lines;
+    }
+}

@@ -1,0 +1,96 @@
+package eu.brain.iot.benchmarks.fabric;
+
+import java.nio.file.Path;
+import java.util.List;
+
+/**
+ * The benchmark's command line.
+ *
+ * @param parts                what to measure: {@code bare} (two bare clients), {@code nodes} (node to node),
+ *                             {@code local} (the local bus of one node)
+ * @param brokers              which brokers, in order: {@code embedded}, {@code mosquitto}
+ * @param mosquittoUri         a Mosquitto already running (null: the benchmark starts Debian's on a free port)
+ * @param floodMessages        messages measured back to back
+ * @param floodWarmup          messages sent first and not measured
+ * @param rate                 the paced rate of the latency runs, messages (events) per second
+ * @param latencyWarmupSeconds paced seconds not measured
+ * @param latencySeconds       paced seconds measured
+ * @param root                 the checkout (broker/target/broker.jar)
+ * @param work                 scratch folder (brokers' state and logs)
+ */
+record Settings(List<String> parts, List<String> brokers, String mosquittoUri, int floodMessages, int floodWarmup, int rate,
+        double latencyWarmupSeconds, double latencySeconds, Path root, Path work) {
+
+    static final String USAGE = """
+            Usage: java -jar benchmarks-fabric/target/fabric-bench.jar [options]
+              --parts LIST          bare,nodes,local (default all: two bare MQTT clients, node to node, one node's
+                                    local bus); node to node needs the federation bundle in node/target/fabric-node.jar
+              --brokers LIST        embedded,mosquitto (default both, in that order)
+              --mosquitto-uri URI   a running Mosquitto (default: start Debian's /usr/sbin/mosquitto on a free port)
+              --messages N          messages measured back to back (default 200000)
+              --warmup N            messages sent before them, not measured (default 50000)
+              --rate N              paced rate of the latency runs, per second (default 2000)
+              --latency-warmup S    paced seconds not measured (default 3)
+              --latency-seconds S   paced seconds measured (default 10)
+              --root DIR            the checkout (default .)
+              --work DIR            scratch folder (default benchmarks-fabric/target/run)
+            """;
+
+    static Settings parse(String[] args) {
+        List<String> parts = List.of("bare", "nodes", "local");
+        List<String> brokers = List.of("embedded", "mosquitto");
+        String mosquitto = null;
+        int messages = 200_000;
+        int warmup = 50_000;
+        int rate = 2000;
+        double latencyWarmup = 3;
+        double latency = 10;
+        Path root = Path.of(".");
+        Path work = null;
+        for (int i = 0; i < args.length; i++) {
+            String flag = args[i];
+            if (i + 1 >= args.length) {
+                throw new IllegalArgumentException(flag + " needs a value (or is unknown)");
+            }
+            String v = args[++i];
+            switch (flag) {
+                case "--parts" -> parts = List.of(v.split(","));
+                case "--brokers" -> brokers = List.of(v.split(","));
+                case "--mosquitto-uri" -> mosquitto = BrokerAddress.parse(v).uri();
+                case "--messages" -> messages = positive(flag, v);
+                case "--warmup" -> warmup = positive(flag, v);
+                case "--rate" -> rate = positive(flag, v);
+                case "--latency-warmup" -> latencyWarmup = positive(flag, v);
+                case "--latency-seconds" -> latency = positive(flag, v);
+                case "--root" -> root = Path.of(v);
+                case "--work" -> work = Path.of(v);
+                default -> throw new IllegalArgumentException("unknown option " + flag);
+            }
+        }
+        for (String b : brokers) {
+            if (!b.equals("embedded") && !b.equals("mosquitto")) {
+                throw new IllegalArgumentException("--brokers takes embedded and mosquitto, found '" + b + "'");
+            }
+        }
+        for (String p : parts) {
+            if (!List.of("bare", "nodes", "local").contains(p)) {
+                throw new IllegalArgumentException("--parts takes bare, nodes and local, found '" + p + "'");
+            }
+        }
+        root = root.toAbsolutePath().normalize();
+        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, root,
+                (work == null ? root.resolve("benchmarks-fabric/target/run") : work).toAbsolutePath());
+    }
+
+    private static int positive(String flag, String v) {
+        try {
+            int n = Integer.parseInt(v);
+            if (n > 0) {
+                return n;
+            }
+        } catch (NumberFormatException e) {
+            // reported below
+        }
+        throw new IllegalArgumentException(flag + " needs a whole number above 0, found '" + v + "'");
+    }
+}

@@ -1,0 +1,240 @@
+#!/usr/bin/env bash
+# Starts a fabric of several nodes on this machine, joined through an MQTT 5 broker: the embedded broker
+# (broker/target/broker.jar, started here in a process of its own) or any broker given by URI. ./fabric-node runs
+# this script for --nodes=N and --broker=URI. See node/README.md, "A fabric of several nodes".
+#
+#   ./fabric-node --nodes=3                 the embedded broker on 127.0.0.1:1883 and node1..node3, REST on
+#                                           127.0.0.1:8181..8183; runs until Ctrl-C (or SIGTERM), which stops them all
+#   ./fabric-node --nodes=3 --fleet         the same, and the simulated fleet (robot-sim) beside node1, whose edge
+#                                           polls it (--fleet-port=N as for one node)
+#   ./fabric-node --nodes=2 --broker=tcp://127.0.0.1:1883   the nodes join that broker; none is started here
+#   ./fabric-node --broker=URI              one node joined to that broker, with its interactive shell
+#
+# Options (besides those of ./fabric-node, passed on to every node: -D..., -X..., --rebuild):
+#   --nodes=N           how many nodes, 1..20 (default 1)
+#   --broker=URI        the broker the nodes join (tcp://HOST:PORT); without it the embedded broker starts here
+#   --broker-port=N     the embedded broker's port (default 1883)
+#   --fabric=NAME       the fabric's name, its topic tree's root (default: fabric)
+#   --state=DIR         the fabric's folder: DIR/nodeK is node K's state (its configuration folder, log, journal),
+#                       DIR/broker the embedded broker's, DIR/fabric.key the fabric's signing key
+#                       (default ${XDG_STATE_HOME:-~/.local/state}/brain-iot/fabric)
+#   --http-port=N       node K's REST port is N+K-1 (default 8181)
+#   --name=NAME         the node's name when there is one node (default node1)
+#   --no-shell          one node: no interactive shell (several nodes never have one)
+#
+# Each node gets the configuration PID eu.brain.iot.federation (a .cfg file in DIR/nodeK/config, beside copies of
+# node/config's files): broker.uri, fabric.name, node.name, key.file, state.dir. The key file is created (32 random bytes,
+# base64, mode 600) when missing; every node of a fabric must be given the same one.
+#
+# Exit code: 0 after Ctrl-C/SIGTERM stopped every node, 1 when the broker or a node did not start (its log is
+# shown), 2 for a bad command line.
+set -euo pipefail
+
+root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
+broker_jar="$root/broker/target/broker.jar"
+max_nodes=20
+ready_timeout_s=180
+no_fleet_port=9 # the edge of a node without the fleet polls here: the discard port, which a usual machine does not serve
+
+nodes=1
+nodes_given=false
+broker_uri=
+broker_port=1883
+fabric_name=fabric
+state_dir="${XDG_STATE_HOME:-$HOME/.local/state}/brain-iot/fabric"
+http_base=8181
+single_name=
+shell=true
+fleet=false
+fleet_port=8090
+node_args=()
+
+die() { echo "fabric-nodes: $*" >&2; exit 2; }
+port_arg() { # port_arg <flag> <value>: the value when it is a port 1..65535, else a usage error
+  [[ $2 =~ ^[0-9]+$ ]] && (( $2 >= 1 && $2 <= 65535 )) || die "$1 needs a port 1..65535, found '$2'"
+  echo "$2"
+}
+
+for arg in "$@"; do
+  case "$arg" in
+    --nodes=*)
+      nodes="${arg#--nodes=}"; nodes_given=true
+      [[ $nodes =~ ^[0-9]+$ ]] && (( nodes >= 1 && nodes <= max_nodes )) \
+        || die "--nodes needs a number of nodes 1..$max_nodes, found '$nodes'" ;;
+    --broker=*)
+      broker_uri="${arg#--broker=}"
+      [[ $broker_uri =~ ^(tcp|mqtt|ssl|mqtts)://[^/:]+:[0-9]+/?$ ]] \
+        || die "--broker needs a broker URI such as tcp://127.0.0.1:1883, found '$broker_uri'" ;;
+    --broker-port=*) broker_port="$(port_arg --broker-port "${arg#--broker-port=}")" ;;
+    --fabric=*)
+      fabric_name="${arg#--fabric=}"
+      [[ $fabric_name =~ ^[A-Za-z0-9_.-]{1,64}$ ]] \
+        || die "--fabric needs a name of 1 to 64 letters, digits, '_', '.' or '-', found '$fabric_name'" ;;
+    --state=*)
+      state_dir="${arg#--state=}"; [[ -n $state_dir ]] || die "--state needs a folder" ;;
+    --http-port=*) http_base="$(port_arg --http-port "${arg#--http-port=}")" ;;
+    --name=*)
+      single_name="${arg#--name=}"
+      [[ $single_name =~ ^[A-Za-z0-9_.-]{1,64}$ ]] \
+        || die "--name needs 1 to 64 letters, digits, '_', '.' or '-', found '$single_name'" ;;
+    --no-shell) shell=false ;;
+    --fleet) fleet=true ;;
+    --fleet-port=*) fleet=true; fleet_port="$(port_arg --fleet-port "${arg#--fleet-port=}")" ;;
+    --rebuild|-D*|-X*) node_args+=("$arg") ;;
+    --check) die "--check starts one node: use ./fabric-node --check without --nodes/--broker" ;;
+    -h|--help) sed -n '2,/^[^#]/{/^#/!q;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
+    *) die "unknown argument '$arg' (try --help)" ;;
+  esac
+done
+if [[ -n $single_name ]] && (( nodes > 1 )); then
+  die "--name names one node; with --nodes=$nodes they are node1..node$nodes"
+fi
+(( http_base + nodes - 1 <= 65535 )) || die "--http-port=$http_base leaves no port for node $nodes"
+$nodes_given || [[ -n $broker_uri ]] || die "give --nodes=N or --broker=URI"
+mkdir -p "$state_dir"
+state_dir="$(cd "$state_dir" && pwd)"
+
+# The fabric's signing key: one file shared by every node of the fabric, never under the repository.
+key_file="$state_dir/fabric.key"
+if [[ ! -s $key_file ]]; then
+  (umask 077 && head -c 32 /dev/urandom | base64 >"$key_file")
+  echo "fabric-nodes: created the fabric's key $key_file (give every node of this fabric a copy)" >&2
+fi
+
+# node_name <k>: node K's name (its folder is $state_dir/<name>)
+node_name() { if [[ -n $single_name ]]; then echo "$single_name"; else echo "node$1"; fi; }
+
+# configure_node <k> <broker uri>: node K's configuration folder, node/config's files and the federation's PID
+configure_node() {
+  local name dir
+  name="$(node_name "$1")"; dir="$state_dir/$name/config"
+  mkdir -p "$dir"
+  find "$root/node/config" -maxdepth 1 -type f \( -name '*.cfg' -o -name '*.config' \) -exec cp {} "$dir"/ \;
+  cat >"$dir/eu.brain.iot.federation.cfg" <<EOF
+# Written by node/bin/fabric-nodes.sh at every start: this node's membership in the fabric.
+broker.uri=$2
+fabric.name=$fabric_name
+node.name=$name
+key.file=$key_file
+state.dir=$state_dir/$name/federation
+EOF
+}
+
+# node_command <k>: ./fabric-node's arguments for node K. ./fabric-node's own --name/--state/--http-port are used
+# when it has them; otherwise the framework properties they stand for.
+node_command() {
+  local k=$1 name port
+  name="$(node_name "$k")"; port=$((http_base + k - 1))
+  cmd=("$root/fabric-node")
+  if grep -q -- '--state=\*' "$root/fabric-node"; then
+    cmd+=("--name=$name" "--state=$state_dir/$name" "--http-port=$port")
+  else
+    cmd+=("-Dfabric.node.name=$name" "-Dorg.osgi.service.http.port=$port")
+  fi
+  cmd+=("-Dfelix.fileinstall.dir=$state_dir/$name/config")
+  if $fleet; then
+    if (( k == 1 )); then
+      cmd+=("--fleet-port=$fleet_port")
+    else # the fleet is node1's: the others' edges own no robots (port 9, discard, where nothing answers)
+      cmd+=("-Deu.brain.iot.edge.fleet.url=http://127.0.0.1:$no_fleet_port/")
+    fi
+  fi
+  cmd+=(${node_args[@]+"${node_args[@]}"})
+}
+
+# --- the broker -------------------------------------------------------------------------------------------------
+broker_pid=
+node_pids=()
+stop_all() {
+  local pid
+  for pid in ${node_pids[@]+"${node_pids[@]}"}; do kill -TERM "$pid" 2>/dev/null || true; done
+  for pid in ${node_pids[@]+"${node_pids[@]}"}; do wait "$pid" 2>/dev/null || true; done
+  if [[ -n $broker_pid ]]; then
+    kill -TERM "$broker_pid" 2>/dev/null || true
+    wait "$broker_pid" 2>/dev/null || true
+  fi
+}
+
+# await_line <pid> <log> <prefix> <what>: waits for a line starting with the prefix in the log, while the process
+# lives, up to ready_timeout_s; on failure shows the log's end and exits 1
+await_line() {
+  local deadline=$((SECONDS + ready_timeout_s))
+  until grep -q "^$3" "$2" 2>/dev/null; do
+    if ! kill -0 "$1" 2>/dev/null || (( SECONDS >= deadline )); then
+      kill -0 "$1" 2>/dev/null && reason="was not ready within $ready_timeout_s s" || reason="ended"
+      echo "fabric-nodes: $4 $reason; the end of its log, $2:" >&2
+      tail -n 30 "$2" | sed 's/^/  /' >&2
+      exit 1
+    fi
+    sleep 0.1
+  done
+}
+
+trap stop_all EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+trap 'exit 129' HUP
+
+if [[ -z $broker_uri ]]; then
+  newer=
+  [[ -f $broker_jar ]] && newer="$(find "$root/broker/src/main" "$root/broker/pom.xml" "$root/pom.xml" \
+    -newer "$broker_jar" -type f -print -quit)"
+  if [[ ! -f $broker_jar || -n $newer ]]; then
+    echo "fabric-nodes: building the embedded broker (mvn -B -pl broker package -DskipTests; log:" \
+      "broker/target/broker-build.log) ..." >&2
+    mkdir -p "$root/broker/target"
+    (cd "$root" && mvn -B -pl broker package -DskipTests >"$root/broker/target/broker-build.log" 2>&1) || {
+      echo "fabric-nodes: the broker's build failed; its errors (all of it: broker/target/broker-build.log):" >&2
+      grep -a '^\[ERROR\]' "$root/broker/target/broker-build.log" | head -20 | sed 's/^/  /' >&2
+      exit 1
+    }
+  fi
+  broker_log="$state_dir/broker.log"
+  java -jar "$broker_jar" --port "$broker_port" --data "$state_dir/broker" >"$broker_log" 2>&1 </dev/null &
+  broker_pid=$!
+  await_line "$broker_pid" "$broker_log" "broker listening on " "the embedded broker (127.0.0.1:$broker_port)"
+  broker_uri="tcp://127.0.0.1:$broker_port"
+  echo "fabric-nodes: embedded broker $broker_uri (pid $broker_pid, log $broker_log)" >&2
+fi
+
+for k in $(seq 1 "$nodes"); do configure_node "$k" "$broker_uri"; done
+
+# One node with a shell: the node runs in the foreground, reading the terminal; when it ends, the EXIT trap stops
+# the broker if it was started here.
+if (( nodes == 1 )) && $shell; then
+  node_command 1
+  set +e
+  "${cmd[@]}"
+  exit $?
+fi
+
+# --- the nodes, in the background ------------------------------------------------------------------------------
+# node1 first: ./fabric-node builds the node when its jar is stale, once; then the others at once.
+start_node() {
+  local name log
+  name="$(node_name "$1")"; log="$state_dir/$name/node.log"
+  node_command "$1"
+  "${cmd[@]}" --no-shell >"$log" 2>&1 </dev/null &
+  node_pids+=($!)
+}
+start_node 1
+await_line "${node_pids[0]}" "$state_dir/$(node_name 1)/node.log" "fabric node ready in" "$(node_name 1)"
+for k in $(seq 2 "$nodes"); do start_node "$k"; done
+for k in $(seq 2 "$nodes"); do
+  await_line "${node_pids[k - 1]}" "$state_dir/node$k/node.log" "fabric node ready in" "node$k"
+done
+
+echo "fabric-nodes: fabric '$fabric_name' of $nodes node(s) through $broker_uri, ready:" >&2
+for k in $(seq 1 "$nodes"); do
+  name="$(node_name "$k")"
+  echo "  $name  REST http://127.0.0.1:$((http_base + k - 1))/sensinact  state $state_dir/$name" \
+    " log $state_dir/$name/node.log  pid ${node_pids[k - 1]}" >&2
+done
+echo "fabric-nodes: Ctrl-C (or kill $$) stops every node$( [[ -n $broker_pid ]] && echo " and the broker")" >&2
+
+# Runs until a signal (the traps exit, the EXIT trap stops everything) or until a node ends.
+set +e
+wait -n "${node_pids[@]}"
+status=$?
+echo "fabric-nodes: a node ended (exit code $status); stopping the others" >&2
+exit 1
