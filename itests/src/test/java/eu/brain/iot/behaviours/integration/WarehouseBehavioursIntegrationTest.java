@@ -41,7 +41,7 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 class WarehouseBehavioursIntegrationTest {
 
     static final Duration DEADLINE = Duration.ofSeconds(15);
-    static final String ROBOT_PID = "eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour";
+    static final String ROBOT_PID = "eu.brain.iot.behaviours.robot.RobotSmartBehaviour";
     static final float IN_UNLOAD = 2;
     static final int IS_OBSTACLE = 4;
 

@@ -13,7 +13,7 @@ import java.util.function.Supplier;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.Test;
 
-import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
+import eu.brain.iot.behaviours.door.DoorSmartBehaviour;
 import eu.brain.iot.behaviours.door.impl.DoorExterns;
 import eu.brain.iot.behaviours.events.ConnectorResolveCollision;
 import eu.brain.iot.behaviours.events.ConnectorTypeDoor;
@@ -24,9 +24,9 @@ import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
 import eu.brain.iot.behaviours.events.TransitionFired;
-import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorBehaviour;
+import eu.brain.iot.behaviours.orchestrator.OrchestratorSmartBehaviour;
 import eu.brain.iot.behaviours.orchestrator.impl.OrchestratorExterns;
-import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.robot.impl.RobotExterns;
 import eu.brain.iot.bip.diag.Diagnostics;
 import eu.brain.iot.bip.smc.SmcSession;
@@ -68,18 +68,18 @@ class BusRunsAreSmcTracesTest {
     /** A run: the behaviours on a recording bus, driven by a seeded random environment. */
     private static final class Run {
         final RecordingBus bus;
-        final RobotBehaviorBehaviour robots;
-        final DoorBehaviorBehaviour door;
-        final OrchestratorBehaviorBehaviour orchestrator;
+        final RobotSmartBehaviour robots;
+        final DoorSmartBehaviour door;
+        final OrchestratorSmartBehaviour orchestrator;
         final Random env;
 
         Run(long seed, boolean interleaved) {
             env = new Random(seed);
             bus = new RecordingBus(interleaved ? new Random(seed * 31 + 7) : null);
             Map<String, Object> trace = Map.of("trace", true);
-            robots = new RobotBehaviorBehaviour(bus, RobotExterns.withoutFleet(), trace);
-            door = new DoorBehaviorBehaviour(bus, new DoorExterns(), trace);
-            orchestrator = new OrchestratorBehaviorBehaviour(bus, new OrchestratorExterns(), trace);
+            robots = new RobotSmartBehaviour(bus, RobotExterns.withoutFleet(), trace);
+            door = new DoorSmartBehaviour(bus, new DoorExterns(), trace);
+            orchestrator = new OrchestratorSmartBehaviour(bus, new OrchestratorExterns(), trace);
             bus.register(robots);
             bus.register(door);
             bus.register(orchestrator);

@@ -9,15 +9,15 @@ import java.util.Map;
 
 import org.junit.jupiter.api.Test;
 
-import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
+import eu.brain.iot.behaviours.door.DoorSmartBehaviour;
 import eu.brain.iot.behaviours.door.DoorBehaviorExterns;
 import eu.brain.iot.behaviours.events.ConnectorResolveCollision;
 import eu.brain.iot.behaviours.events.ConnectorTypeDoor;
 import eu.brain.iot.behaviours.events.RobotBehaviorFromUnloadObstacle;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
-import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorBehaviour;
+import eu.brain.iot.behaviours.orchestrator.OrchestratorSmartBehaviour;
 import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorExterns;
-import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.robot.RobotBehaviorExterns;
 import eu.brain.iot.behaviours.warehouse.ModelInstance;
 import eu.brain.iot.behaviours.warehouse.RobotNames;
@@ -128,9 +128,9 @@ class GroupsMappingTest {
     void eachGroupDrivesItsOwnRobotsAndAGroupWithOneRobotResolvesItsCollisions() {
         TestBus bus = new TestBus();
         Recording externs = new Recording();
-        RobotBehaviorBehaviour robots = new RobotBehaviorBehaviour(bus, externs, Map.of());
-        OrchestratorBehaviorBehaviour orchestrator = new OrchestratorBehaviorBehaviour(bus, externs, Map.of());
-        DoorBehaviorBehaviour door = new DoorBehaviorBehaviour(bus, externs, Map.of());
+        RobotSmartBehaviour robots = new RobotSmartBehaviour(bus, externs, Map.of());
+        OrchestratorSmartBehaviour orchestrator = new OrchestratorSmartBehaviour(bus, externs, Map.of());
+        DoorSmartBehaviour door = new DoorSmartBehaviour(bus, externs, Map.of());
         bus.register(robots);
         bus.register(orchestrator);
         bus.register(door);

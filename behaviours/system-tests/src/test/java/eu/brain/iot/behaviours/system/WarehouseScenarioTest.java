@@ -8,7 +8,7 @@ import java.util.Map;
 import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
-import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
+import eu.brain.iot.behaviours.door.DoorSmartBehaviour;
 import eu.brain.iot.behaviours.door.impl.DoorExterns;
 import eu.brain.iot.behaviours.events.ConnectorCollisionResolved;
 import eu.brain.iot.behaviours.events.ConnectorResolveCollision;
@@ -20,9 +20,9 @@ import eu.brain.iot.behaviours.events.RobotBehaviorStorageToDocking;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.TransitionFired;
-import eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorBehaviour;
+import eu.brain.iot.behaviours.orchestrator.OrchestratorSmartBehaviour;
 import eu.brain.iot.behaviours.orchestrator.impl.OrchestratorExterns;
-import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.robot.impl.RobotExterns;
 
 /**
@@ -38,9 +38,9 @@ class WarehouseScenarioTest {
     static final int IN_FRONT_OF_CART = 6;
 
     private TestBus bus;
-    private RobotBehaviorBehaviour robots;
-    private DoorBehaviorBehaviour door;
-    private OrchestratorBehaviorBehaviour orchestrator;
+    private RobotSmartBehaviour robots;
+    private DoorSmartBehaviour door;
+    private OrchestratorSmartBehaviour orchestrator;
     private DoorExterns doorExterns;
 
     @BeforeEach
@@ -51,9 +51,9 @@ class WarehouseScenarioTest {
     private void start(Map<String, Object> config) {
         bus = new TestBus();
         doorExterns = new DoorExterns();
-        robots = new RobotBehaviorBehaviour(bus, RobotExterns.withoutFleet(), config);
-        door = new DoorBehaviorBehaviour(bus, doorExterns, config);
-        orchestrator = new OrchestratorBehaviorBehaviour(bus, new OrchestratorExterns(), config);
+        robots = new RobotSmartBehaviour(bus, RobotExterns.withoutFleet(), config);
+        door = new DoorSmartBehaviour(bus, doorExterns, config);
+        orchestrator = new OrchestratorSmartBehaviour(bus, new OrchestratorExterns(), config);
         bus.register(robots);
         bus.register(door);
         bus.register(orchestrator);

@@ -50,7 +50,7 @@ class MainTest {
         Path output = dir.resolve("gen");
         assertThat(run("generate", files[0], files[1], files[2], files[3], "-I", "../../behaviours/events/src/main/bip",
                 "-o", output.toString())).as(err()).isZero();
-        assertThat(output.resolve("eu/brain/iot/behaviours/robot/RobotBehaviorBehaviour.java")).exists();
+        assertThat(output.resolve("eu/brain/iot/behaviours/robot/RobotSmartBehaviour.java")).exists();
         assertThat(output.resolve("eu/brain/iot/behaviours/events/ConnectorResolveCollision.java")).exists();
         // 20 files: the collision-resolved connector is a broadcast (no offer event of its own)
         assertThat(out.toString(StandardCharsets.UTF_8)).contains("bip: wrote 20 Java file(s)");
@@ -164,10 +164,10 @@ class MainTest {
                 B + "door/src/main/bip", "-I", B + "orchestrator/src/main/bip", "--root", "WarehouseSystem.Compound",
                 "-o", gen.toString())).as(err()).isZero();
         assertThat(out.toString(StandardCharsets.UTF_8)).contains("bip: wrote 3 Java file(s)")
-                .contains("  Robot_behavior: eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour (smart behaviour "
+                .contains("  Robot_behavior: eu.brain.iot.behaviours.robot.RobotSmartBehaviour (smart behaviour "
                         + "hosting Robot1, Robot2, Robot3 of WarehouseSystem.Compound, one copy per group)\n")
                 .contains("  no event types: they belong to the root compound's package WarehouseSystem");
-        assertThat(gen.resolve("eu/brain/iot/behaviours/robot/RobotBehaviorBehaviour.java")).exists();
+        assertThat(gen.resolve("eu/brain/iot/behaviours/robot/RobotSmartBehaviour.java")).exists();
     }
 
     @Test

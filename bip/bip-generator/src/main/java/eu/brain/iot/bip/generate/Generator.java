@@ -69,7 +69,8 @@ public final class Generator {
                 }
                 calls = ExternsWriter.distinct(calls, atom, diagnostics);
                 String base = JavaNames.type(atom.name());
-                AtomNames n = new AtomNames(javaPackage, base, base + "Externs", !calls.isEmpty(), base + "Behaviour");
+                AtomNames n = new AtomNames(javaPackage, base, base + "Externs", !calls.isEmpty(),
+                        JavaNames.behaviourClass(base));
                 names.put(atom, n);
                 if (!workspace.isOwn(pkg.name())) {
                     continue;
@@ -136,8 +137,8 @@ public final class Generator {
                     summary.add("no behaviour class for " + atom.name() + ": root compound " + root
                             + " does not instantiate it");
                 } else {
-                    summary.add(atom.name() + ": " + JavaNames.javaPackage(pkg) + "." + JavaNames.type(atom.name())
-                            + "Behaviour (smart behaviour hosting " + String.join(", ", paths) + " of " + root
+                    summary.add(atom.name() + ": " + JavaNames.javaPackage(pkg) + "."
+                            + JavaNames.behaviourClass(JavaNames.type(atom.name())) + " (smart behaviour hosting " + String.join(", ", paths) + " of " + root
                             + ", one copy per group)");
                 }
             }

@@ -1,5 +1,6 @@
 package eu.brain.iot.bip.generate;
 
+import java.util.List;
 import java.util.Locale;
 import java.util.Set;
 
@@ -17,6 +18,9 @@ public final class JavaNames {
             "native", "new", "package", "private", "protected", "public", "return", "short", "static", "strictfp",
             "super", "switch", "synchronized", "this", "throw", "throws", "transient", "try", "void", "volatile",
             "while", "true", "false", "null", "var", "record", "yield", "sealed", "permits", "_");
+
+    /** Endings of an atom type's name that already say behaviour (see {@link #behaviourClass}). */
+    private static final List<String> BEHAVIOUR_SUFFIXES = List.of("Behavior", "Behaviour");
 
     private JavaNames() {
     }
@@ -41,6 +45,21 @@ public final class JavaNames {
         }
         String s = out.length() == 0 ? "X" : out.toString();
         return Character.isJavaIdentifierStart(s.charAt(0)) ? s : "X" + s;
+    }
+
+    /**
+     * The smart behaviour class of an atom type, from its Java type name: {@code Sensor} gives {@code SensorBehaviour};
+     * a name that already says behaviour does not say it twice: {@code RobotBehavior} (the paper's
+     * {@code Robot_behavior}) gives {@code RobotSmartBehaviour}, not {@code RobotSmartBehaviour}, and stays apart
+     * from the atom's own class {@code RobotBehavior}.
+     */
+    public static String behaviourClass(String atomJavaType) {
+        for (String suffix : BEHAVIOUR_SUFFIXES) {
+            if (atomJavaType.endsWith(suffix) && atomJavaType.length() > suffix.length()) {
+                return atomJavaType.substring(0, atomJavaType.length() - suffix.length()) + "SmartBehaviour";
+            }
+        }
+        return atomJavaType + "Behaviour";
     }
 
     /** {@code unloadLocation} becomes {@code UnloadLocation} (for method names like onUnloadLocation). */

@@ -48,7 +48,7 @@ class GeneratedCodeTest {
         List<JavaFile> files = tool.generateInMemory(null);
         assertThat(tool.diagnostics().errors()).isEmpty();
         assertThat(files).extracting(JavaFile::className).contains("RobotBehavior", "RobotBehaviorExterns",
-                "RobotBehaviorBehaviour", "DoorBehaviorBehaviour", "OrchestratorBehaviorBehaviour",
+                "RobotSmartBehaviour", "DoorSmartBehaviour", "OrchestratorSmartBehaviour",
                 "ConnectorResolveCollision", "ConnectorResolveCollisionOffer", "ConnectorTypeDoor", "TransitionFired");
         compareAll(tool, InMemoryCompiler.compile(files, out));
     }

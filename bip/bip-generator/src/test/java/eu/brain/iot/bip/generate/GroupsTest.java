@@ -26,7 +26,7 @@ import org.junit.jupiter.api.io.TempDir;
 class GroupsTest {
 
     private static final String EVENTS = "eu.brain.iot.behaviours.events.";
-    private static final String ROBOTS = "eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour";
+    private static final String ROBOTS = "eu.brain.iot.behaviours.robot.RobotSmartBehaviour";
     private static final double IN_UNLOAD = 2;
     private static final int IS_OBSTACLE = 4;
     private static final int IS_DOOR = 5;
@@ -47,9 +47,9 @@ class GroupsTest {
     private void start(Map<String, Object> config, Path dir) throws Exception {
         bus = new GeneratedWarehouse(tool, null, dir);
         robots = bus.start(ROBOTS, "eu.brain.iot.behaviours.robot.RobotBehaviorExterns", config);
-        door = bus.start("eu.brain.iot.behaviours.door.DoorBehaviorBehaviour",
+        door = bus.start("eu.brain.iot.behaviours.door.DoorSmartBehaviour",
                 "eu.brain.iot.behaviours.door.DoorBehaviorExterns", config);
-        orchestrator = bus.start("eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorBehaviour",
+        orchestrator = bus.start("eu.brain.iot.behaviours.orchestrator.OrchestratorSmartBehaviour",
                 "eu.brain.iot.behaviours.orchestrator.OrchestratorBehaviorExterns", config);
     }
 

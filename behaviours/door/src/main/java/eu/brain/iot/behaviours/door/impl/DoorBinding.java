@@ -12,7 +12,7 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 
-import eu.brain.iot.behaviours.door.DoorBehaviorBehaviour;
+import eu.brain.iot.behaviours.door.DoorSmartBehaviour;
 import eu.brain.iot.behaviours.events.DoorBehaviorClosed;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
@@ -65,7 +65,7 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
 
     private final DoorControl control;
     private final EventBus bus;
-    private final DoorBehaviorBehaviour model;
+    private final DoorSmartBehaviour model;
     private final int closeAfter;
     private final int near;
     private final BindingThread thread;
@@ -78,11 +78,11 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Activate
     public DoorBinding(@Reference DoorControl control, @Reference EventBus bus,
-            @Reference(target = "(component.name=eu.brain.iot.behaviours.door.DoorBehaviorBehaviour)")
+            @Reference(target = "(component.name=eu.brain.iot.behaviours.door.DoorSmartBehaviour)")
             SmartBehaviour<?> model, DoorConfig config) {
         this.control = control;
         this.bus = bus;
-        this.model = (DoorBehaviorBehaviour) model;
+        this.model = (DoorSmartBehaviour) model;
         this.closeAfter = Math.max(1, config.close_after_polls());
         this.near = Math.max(1, config.near_cells());
         this.thread = new BindingThread("door-binding", config.speed(), config.poll_period_ms());

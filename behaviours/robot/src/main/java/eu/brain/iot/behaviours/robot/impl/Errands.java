@@ -15,7 +15,7 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
 /**
  * The errands of every robot and the claim table that keeps two robots from going for the same cart. One table is
  * enough because every robot instance of the model lives in one behaviour component (the generated
- * {@code RobotBehaviorBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
+ * {@code RobotSmartBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
  * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
  * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given

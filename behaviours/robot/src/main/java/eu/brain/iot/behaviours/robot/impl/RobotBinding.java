@@ -19,7 +19,7 @@ import eu.brain.iot.behaviours.events.RobotBehaviorStorageToDocking;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
-import eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour;
+import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
@@ -109,7 +109,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     private final RobotFleet fleet;
     private final EventBus bus;
-    private final RobotBehaviorBehaviour model;
+    private final RobotSmartBehaviour model;
     private final long patienceNanos;
     private final BindingThread thread;
     private final RobotInput.Handler handler = new InputHandler();
@@ -129,11 +129,11 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Activate
     public RobotBinding(@Reference RobotFleet fleet, @Reference EventBus bus,
-            @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotBehaviorBehaviour)")
+            @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotSmartBehaviour)")
             SmartBehaviour<?> model, RobotConfig config) {
         this.fleet = fleet;
         this.bus = bus;
-        this.model = (RobotBehaviorBehaviour) model;
+        this.model = (RobotSmartBehaviour) model;
         this.thread = new BindingThread("robot-binding", config.speed(), config.poll_period_ms());
         this.pollNanos = thread.periodNanos();
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());

@@ -11,6 +11,7 @@ import java.net.http.HttpResponse;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Collection;
+import java.util.Collections;
 import java.util.HashMap;
 import java.util.Hashtable;
 import java.util.List;
@@ -63,7 +64,7 @@ abstract class RestTestBase {
     static void startApi() throws Exception {
         model = new ScriptedModel();
         registration = context.registerService(DeviceModel.class, model, null);
-        base = awaitApi(Map.of());
+        base = awaitApi(Map.of(), List.of());
     }
 
     @AfterAll
@@ -80,15 +81,12 @@ abstract class RestTestBase {
 
     /** Sets these properties of the API (keeping those set before) and returns once it runs with them. */
     static void configure(Map<String, Object> properties) throws Exception {
-        if (properties.entrySet().stream()
-                .allMatch(e -> Objects.deepEquals(e.getValue(), configured.get(e.getKey())))) {
-            // Config Admin would still send the same values again, and DS re-register the servlets a moment later: a
-            // wait on the property values would pass at once and the next request meet no servlet (404)
-            return;
-        }
         configured.putAll(properties);
+        // DS registers the servlets and the gate again even for values already in force: wait for the new ones, not
+        // the old ones about to go (a request sent to those would meet no servlet: 404)
+        List<Long> before = registeredIds();
         cm.getConfiguration(PID, "?").update(new Hashtable<>(configured));
-        base = awaitApi(properties);
+        base = awaitApi(properties, before);
     }
 
     /**
@@ -96,31 +94,14 @@ abstract class RestTestBase {
      * change asynchronously and DS re-activates the components: a request sent at once could meet the old ones),
      * and Jetty answers JSON errors (the Jetty setup is in place); returns where Felix HTTP listens.
      */
-    private static URI awaitApi(Map<String, Object> properties) {
+    private static URI awaitApi(Map<String, Object> properties, List<Long> stale) {
         return await("the edge's REST API with " + properties).atMost(DEADLINE).until(() -> {
             ServiceReference<HttpServiceRuntime> ref = context.getServiceReference(HttpServiceRuntime.class);
             if (ref == null) {
                 return null;
             }
-            HttpServiceRuntime runtime = context.getService(ref);
-            List<Long> ids = new ArrayList<>();
-            try {
-                for (ServletContextDTO c : runtime.getRuntimeDTO().servletContextDTOs) {
-                    for (ServletDTO s : c.servletDTOs) {
-                        if (SERVLETS.contains(s.name)) {
-                            ids.add(s.serviceId);
-                        }
-                    }
-                    for (FilterDTO f : c.filterDTOs) {
-                        if (GATE.equals(f.name)) {
-                            ids.add(f.serviceId);
-                        }
-                    }
-                }
-            } finally {
-                context.ungetService(ref);
-            }
-            if (ids.size() != SERVLETS.size() + 1) {
+            List<Long> ids = registeredIds();
+            if (ids.size() != SERVLETS.size() + 1 || !Collections.disjoint(ids, stale)) {
                 return null;
             }
             for (long id : ids) {
@@ -145,6 +126,33 @@ abstract class RestTestBase {
             return a.status() == 404 && String.valueOf(a.header("Content-Type")).startsWith("application/json")
                     ? uri : null;
         }, u -> u != null);
+    }
+
+    /** The service ids of the edge's servlets and gate that Felix HTTP runs now. */
+    private static List<Long> registeredIds() {
+        ServiceReference<HttpServiceRuntime> ref = context.getServiceReference(HttpServiceRuntime.class);
+        List<Long> ids = new ArrayList<>();
+        if (ref == null) {
+            return ids;
+        }
+        HttpServiceRuntime runtime = context.getService(ref);
+        try {
+            for (ServletContextDTO c : runtime.getRuntimeDTO().servletContextDTOs) {
+                for (ServletDTO s : c.servletDTOs) {
+                    if (SERVLETS.contains(s.name)) {
+                        ids.add(s.serviceId);
+                    }
+                }
+                for (FilterDTO f : c.filterDTOs) {
+                    if (GATE.equals(f.name)) {
+                        ids.add(f.serviceId);
+                    }
+                }
+            }
+        } finally {
+            context.ungetService(ref);
+        }
+        return ids;
     }
 
     private static URI endpoint(ServiceReference<HttpServiceRuntime> ref) {
