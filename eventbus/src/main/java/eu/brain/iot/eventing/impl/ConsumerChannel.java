@@ -233,6 +233,7 @@ final class ConsumerChannel {
         Envelope e;
         while ((e = queue.poll()) != null) {
             e.counters.discarded.increment();
+            e.consumed();
             count++;
         }
         if (count > 0 && discardLogged.compareAndSet(false, true)) {
