@@ -44,6 +44,24 @@ public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
         return id;
     }
 
+    /**
+     * Register a typed behaviour with a filter over the fields ({@code null} for none) that loads event classes by
+     * name from its own class loader, as a behaviour's bundle does.
+     */
+    public long addTypedBehaviour(Object behaviour, String filter, String... consumed) {
+        long id = ids.incrementAndGet();
+        ClassLoader loader = behaviour.getClass().getClassLoader();
+        bus.addConsumer(new ConsumerSpec(id, "typed#" + id, "test.bundle", Set.of(consumed), filter(filter), false,
+                false, BehaviourHandle.of(behaviour), className -> {
+                    try {
+                        return Class.forName(className, false, loader);
+                    } catch (ClassNotFoundException e) {
+                        return null;
+                    }
+                }));
+        return id;
+    }
+
     /** Register an untyped behaviour with a filter over the fields ({@code null} for none). */
     public long addUntypedBehaviour(Object behaviour, String filter, String... consumed) {
         long id = ids.incrementAndGet();
