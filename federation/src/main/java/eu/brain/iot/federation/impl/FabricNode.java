@@ -17,8 +17,6 @@ import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.stream.Stream;
 
-import eu.brain.iot.eventing.spi.EventForwarder;
-import eu.brain.iot.federation.impl.RemoteNode.Presence;
 import eu.brain.iot.federation.impl.Wire.MalformedException;
 
 /**
@@ -55,6 +53,7 @@ public final class FabricNode implements AutoCloseable {
     private final Sender sender;
 
     private final Map<String, RemoteNode> nodes = new ConcurrentHashMap<>();
+    private final Membership membership;
     private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
     private final Map<String, Inbox> inboxes = new ConcurrentHashMap<>();
     private final Set<Inbox> refused = new LinkedHashSet<>();
@@ -103,6 +102,8 @@ public final class FabricNode implements AutoCloseable {
                         in.execute(() -> onMessage(topic, payload, signature));
                     }
                 });
+        this.membership = new Membership(settings.fabric(), host, this::node, this::outbox,
+                destination -> (type, names, data) -> forward(destination, type, names, data));
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
     }
 
@@ -149,7 +150,7 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
-    private Outbox outbox(String destination) {
+    Outbox outbox(String destination) {
         return outboxes.computeIfAbsent(destination, d -> {
             try {
                 return new Outbox(d, settings.stateDir().resolve("outbox").resolve(d + ".journal"),
@@ -161,7 +162,7 @@ public final class FabricNode implements AutoCloseable {
         });
     }
 
-    private RemoteNode node(String name) {
+    RemoteNode node(String name) {
         return nodes.computeIfAbsent(name, RemoteNode::new);
     }
 
@@ -231,7 +232,7 @@ public final class FabricNode implements AutoCloseable {
             return;
         }
         if (payload.length == 0 && !own) {
-            interestCleared(claimed); // a retained message removed
+            membership.interestCleared(claimed); // a retained message removed
             return;
         }
         NodeStats stats = node(claimed).stats;
@@ -247,8 +248,8 @@ public final class FabricNode implements AutoCloseable {
             switch (t.kind()) {
             case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats);
             case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats);
-            case Topics.INTEREST -> onInterest(claimed, wire.readInterest(payload), stats);
-            case Topics.STATUS -> onStatus(claimed, wire.readStatus(payload), stats);
+            case Topics.INTEREST -> membership.onInterest(claimed, wire.readInterest(payload), stats);
+            case Topics.STATUS -> membership.onStatus(claimed, wire.readStatus(payload), stats);
             default -> stats.malformed.increment();
             }
         } catch (MalformedException e) {
@@ -348,66 +349,6 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
-    private void onInterest(String from, Wire.Interest interest, NodeStats stats) {
-        if (!interest.node().equals(from)) {
-            stats.malformed.increment();
-            return;
-        }
-        RemoteNode node = node(from);
-        if (interest.sent() < node.interestSent) {
-            return; // an older announcement than the one applied
-        }
-        node.interestSent = interest.sent();
-        node.interest = List.copyOf(interest.entries());
-        syncForwarders(node);
-    }
-
-    private void interestCleared(String from) {
-        RemoteNode node = node(from);
-        node.interest = List.of();
-        syncForwarders(node);
-    }
-
-    private void onStatus(String from, Wire.Status status, NodeStats stats) {
-        if (!status.node().equals(from)) {
-            stats.malformed.increment();
-            return;
-        }
-        RemoteNode node = node(from);
-        Presence before = node.status;
-        node.status = Wire.Status.ONLINE.equals(status.state()) ? Presence.ONLINE : Presence.OFFLINE;
-        if (before != node.status) {
-            host.info("Fabric {}: node {} is {}", settings.fabric(), from, status.state());
-        }
-        syncForwarders(node);
-    }
-
-    /** Forwarders for exactly the interest of an online node: new entries first, then the withdrawn ones go. */
-    private void syncForwarders(RemoteNode node) {
-        List<InterestEntry> wanted = node.status == Presence.ONLINE ? node.interest : List.of();
-        if (!wanted.isEmpty()) {
-            outbox(node.name); // before the bus can route to it
-        }
-        EventForwarder forwarder = (type, names, data) -> forward(node.name, type, names, data);
-        for (InterestEntry e : wanted) {
-            if (!node.forwarders.containsKey(e)) {
-                node.forwarders.put(e, host.addForwarder(node.name, e, forwarder));
-            }
-        }
-        for (var it = node.forwarders.entrySet().iterator(); it.hasNext();) {
-            var entry = it.next();
-            if (!wanted.contains(entry.getKey())) {
-                it.remove();
-                try {
-                    entry.getValue().close();
-                } catch (Exception e) {
-                    host.warn("Fabric {}: a forwarder to {} did not close: {}", settings.fabric(), node.name,
-                            e.getMessage());
-                }
-            }
-        }
-    }
-
     // ---- sending ----------------------------------------------------------------------------------------------
 
     /** A forwarder's event (on a delivery worker of the bus): kept for its destination, sent by the sender. */
@@ -456,10 +397,7 @@ public final class FabricNode implements AutoCloseable {
         closed = true;
         try {
             in.submit(() -> {
-                nodes.values().forEach(n -> {
-                    n.status = Presence.OFFLINE;
-                    syncForwarders(n);
-                });
+                membership.leaveAll(nodes.values());
                 if (link.isConnected()) {
                     try {
                         publishPresence(Wire.Status.OFFLINE);
@@ -482,6 +420,13 @@ public final class FabricNode implements AutoCloseable {
     }
 
     private void shutdown(boolean abort) {
+        for (Inbox i : inboxes.values()) { // first: no window moves after this instant
+            try {
+                i.close();
+            } catch (IOException e) {
+                host.warn("Fabric {}: window of {} not closed: {}", settings.fabric(), i.publisher(), e.getMessage());
+            }
+        }
         in.shutdownNow();
         try {
             in.awaitTermination(5, TimeUnit.SECONDS);
@@ -493,13 +438,6 @@ public final class FabricNode implements AutoCloseable {
             link.abort();
         } else {
             link.close();
-        }
-        for (Inbox i : inboxes.values()) {
-            try {
-                i.close();
-            } catch (IOException e) {
-                host.warn("Fabric {}: window of {} not closed: {}", settings.fabric(), i.publisher(), e.getMessage());
-            }
         }
         for (Outbox o : outboxes.values()) {
             try {

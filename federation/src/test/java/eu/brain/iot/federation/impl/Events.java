@@ -45,14 +45,20 @@ final class Events {
     /** Keeps every event it receives, in order. */
     static final class Recorder implements SmartBehaviour<Moved> {
         final List<Moved> got = new CopyOnWriteArrayList<>();
-        /** Set when its node "crashes": a dead process runs no behaviour. */
-        volatile boolean dead;
+        /** Set when its node "crashes" (under this object's monitor): a dead process runs no behaviour. */
+        private boolean dead;
 
         @Override
-        public void notify(Moved event) {
+        public synchronized void notify(Moved event) {
             if (!dead) {
                 got.add(event);
             }
+        }
+
+        /** Kill the node this behaviour runs in, as kill -9 would: from this instant it sees no event. */
+        synchronized void dieWith(TestNode node) {
+            dead = true;
+            node.crash();
         }
 
         List<Long> seqs() {

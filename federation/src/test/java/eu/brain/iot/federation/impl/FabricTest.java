@@ -192,8 +192,7 @@ class FabricTest {
         });
         publisher.start();
         await().atMost(DEADLINE).until(() -> r.got.size() >= total / 5);
-        r.dead = true; // like kill -9: no behaviour runs any more, no goodbye; the broker sends b's Last Will
-        b.crash();
+        r.dieWith(b); // like kill -9: no behaviour runs any more, no goodbye; the broker sends b's Last Will
         nodes.remove(b);
         await("b offline at a").atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
         Recorder r2 = new Recorder();
