@@ -344,7 +344,8 @@ final class AsyncEventBus implements EventBus {
      * the new table is published: every publisher that can reach the behaviour queues behind them.
      */
     void addConsumer(ConsumerSpec spec) {
-        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log);
+        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log,
+                spec.forwarder() ? new Orphans(this, log) : null);
         boolean madeReady;
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);

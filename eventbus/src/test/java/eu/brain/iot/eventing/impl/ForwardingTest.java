@@ -114,6 +114,28 @@ class ForwardingTest {
     }
 
     @Test
+    void eventsQueuedForAForwarderThatGoesAwayArePublishedAgainNotDiscarded() throws Exception {
+        CountDownLatch inside = new CountDownLatch(1);
+        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
+            inside.countDown();
+            try {
+                new CountDownLatch(1).await(20, TimeUnit.SECONDS); // a node that does not take more
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "B", null, Moved.class.getName());
+        for (int i = 1; i <= 5; i++) {
+            bus.deliver(new Moved("r" + i));
+        }
+        assertThat(inside.await(20, TimeUnit.SECONDS)).isTrue();
+
+        bus.removeBehaviour(id); // its node left: the 4 events still queued go to whoever takes them now (nobody)
+
+        await().atMost(DEADLINE).until(() -> bus.statistics(Moved.class.getName()).unhandled == 4);
+        assertThat(bus.statistics(Moved.class.getName()).discarded).isZero();
+    }
+
+    @Test
     void aRemoteEventNoBehaviourTakesIsDoneAtOnce() {
         AtomicInteger done = new AtomicInteger();
         assertThat(bus.tryDeliverRemote("x.Unknown", List.of(), Map.of("a", 1), done::incrementAndGet)).isTrue();
