@@ -121,10 +121,11 @@ public final class FabricNode implements AutoCloseable {
         }
         try {
             link.connect(); // connectComplete follows on Paho's thread
-        } catch (IOException e) {
+        } catch (IOException | RuntimeException | LinkageError e) {
             if (!warnedUnreachable) {
                 host.warn("Fabric {}: node {} cannot reach the broker: {}; trying again every {} ms",
-                        settings.fabric(), settings.node(), e.getMessage(), CONNECT_RETRY_MILLIS);
+                        settings.fabric(), settings.node(), e instanceof IOException ? e.getMessage() : e.toString(),
+                        CONNECT_RETRY_MILLIS);
                 warnedUnreachable = true;
             }
             connecting = true;
@@ -249,7 +250,10 @@ public final class FabricNode implements AutoCloseable {
             case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats);
             case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats);
             case Topics.INTEREST -> membership.onInterest(claimed, wire.readInterest(payload), stats);
-            case Topics.STATUS -> membership.onStatus(claimed, wire.readStatus(payload), stats);
+            case Topics.STATUS -> {
+                membership.onStatus(claimed, wire.readStatus(payload), stats);
+                sender.wake(); // a node back online: what was kept for it goes now
+            }
             default -> stats.malformed.increment();
             }
         } catch (MalformedException e) {

@@ -112,8 +112,8 @@ final class Sender {
                 any |= outbox.rewind(force, settings.resendTimeoutMillis()) > 0;
             }
         }
-        if (any || force) {
-            wake();
+        if (any || force || outboxes.stream().anyMatch(Outbox::hasUnsent)) {
+            wake(); // also a safety net: nothing kept waits longer than one check for the sender
         }
     }
 

@@ -41,6 +41,8 @@ import org.osgi.framework.ServiceReference;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.cm.Configuration;
 import org.osgi.service.cm.ConfigurationAdmin;
+import org.osgi.service.log.LogEntry;
+import org.osgi.service.log.LogReaderService;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
 
@@ -144,8 +146,13 @@ class FabricComponentIntegrationTest {
 
         // its interest, retained and signed with the fabric's key
         String interestTopic = BASE + "it-node/interest";
-        await().atMost(DEADLINE).until(() -> retained.containsKey(interestTopic)
-                && new String(retained.get(interestTopic), StandardCharsets.UTF_8).contains("it.Ping"));
+        try {
+            await().atMost(DEADLINE).until(() -> retained.containsKey(interestTopic)
+                    && new String(retained.get(interestTopic), StandardCharsets.UTF_8).contains("it.Ping"));
+        } catch (org.awaitility.core.ConditionTimeoutException e) {
+            throw new AssertionError("no interest announced; fabric:nodes says: " + command("nodes") + "; log: "
+                    + log(), e);
+        }
         assertThat(signatures.get(interestTopic)).isEqualTo(sign(key, interestTopic, retained.get(interestTopic)));
 
         // the peer announces itself: this node registers a forwarder for it and routes it.Pong there
@@ -183,6 +190,23 @@ class FabricComponentIntegrationTest {
         await().atMost(DEADLINE).until(() -> forwarderTo("peer") == null);
         await().atMost(DEADLINE).until(() -> retained.containsKey(BASE + "it-node/status") && new String(
                 retained.get(BASE + "it-node/status"), StandardCharsets.UTF_8).contains("offline"));
+    }
+
+    private String log() {
+        ServiceReference<LogReaderService> ref = context.getServiceReference(LogReaderService.class);
+        if (ref == null) {
+            return "(no log reader)";
+        }
+        StringBuilder out = new StringBuilder();
+        java.util.Enumeration<LogEntry> entries = context.getService(ref).getLog();
+        while (entries.hasMoreElements()) {
+            LogEntry e = entries.nextElement();
+            if (e.getLogLevel().ordinal() <= org.osgi.service.log.LogLevel.INFO.ordinal()) {
+                out.append('\n').append(e.getLogLevel()).append(' ').append(e.getMessage())
+                        .append(e.getException() == null ? "" : " " + e.getException());
+            }
+        }
+        return out.toString();
     }
 
     private ServiceReference<?> forwarderTo(String node) throws Exception {
