@@ -121,7 +121,7 @@ public final class FabricNode implements AutoCloseable {
         }
         try {
             link.connect(); // connectComplete follows on Paho's thread
-        } catch (IOException | RuntimeException | LinkageError e) {
+        } catch (IOException | RuntimeException | Error e) {
             if (!warnedUnreachable) {
                 host.warn("Fabric {}: node {} cannot reach the broker: {}; trying again every {} ms",
                         settings.fabric(), settings.node(), e instanceof IOException ? e.getMessage() : e.toString(),
