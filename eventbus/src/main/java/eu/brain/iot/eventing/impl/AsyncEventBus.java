@@ -2,7 +2,6 @@ package eu.brain.iot.eventing.impl;
 
 import java.time.Instant;
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -10,7 +9,6 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.locks.LockSupport;
 
 import org.osgi.service.log.Logger;
 
@@ -115,9 +113,9 @@ final class AsyncEventBus implements EventBus {
         Route route = table.routeFor(snapshot.getClass(), this::countersFor);
         ConsumerChannel[] targets = route.targets(snapshot);
         if (targets.length > 0) {
-            return send(targets, route.counters(), snapshot, wait); // the hot path: no hold, no policy, no lock
+            return send(targets, route, snapshot, wait, null); // the hot path: no hold, no policy, no lock
         }
-        return unhandled(table, route, snapshot, snapshot.getClass(), wait);
+        return unhandled(table, route, snapshot, snapshot.getClass(), null, wait, null);
     }
 
     private boolean publish(String eventType, Map<String, Object> eventData, boolean wait) {
@@ -132,18 +130,45 @@ final class AsyncEventBus implements EventBus {
         Route route = table.routeFor(eventType, this::countersFor);
         ConsumerChannel[] targets = route.targets(snapshot);
         if (targets.length > 0) {
-            return send(targets, route.counters(), snapshot, wait);
+            return send(targets, route, snapshot, wait, null);
         }
-        return unhandled(table, route, snapshot, null, wait);
+        return unhandled(table, route, snapshot, null, null, wait, null);
     }
 
-    /** The route of an event in a table; {@code type} is null for an untyped event. */
-    private Route routeOf(RouteTable table, Class<?> type, String eventType) {
+    /**
+     * An event from another node: routed to local behaviours only (never to a forwarder), never waiting.
+     *
+     * @see eu.brain.iot.eventing.spi.RemoteEvents#tryDeliverRemote
+     */
+    boolean publishRemote(String eventType, List<String> typeNames, Map<String, Object> eventData, Runnable done) {
+        if (eventType == null || eventType.isEmpty() || eventData == null || done == null) {
+            throw new IllegalArgumentException("tryDeliverRemote: eventType, eventData and done are required, got "
+                    + "eventType=" + eventType);
+        }
+        List<String> names = RouteTable.remoteNames(eventType, typeNames);
+        Map<String, Object> snapshot = EventMaps.copyMap(eventData);
+        RouteTable table = routes;
+        Route route = table.routeForRemote(eventType, names, this::countersFor);
+        ConsumerChannel[] targets = route.targets(snapshot);
+        if (targets.length > 0) {
+            return send(targets, route, snapshot, false, done);
+        }
+        return unhandled(table, route, snapshot, null, names, false, done);
+    }
+
+    /**
+     * The route of an event in a table; {@code type} is null for an untyped event, {@code remoteNames} null for
+     * a local one.
+     */
+    private Route routeOf(RouteTable table, Class<?> type, String eventType, List<String> remoteNames) {
+        if (remoteNames != null) {
+            return table.routeForRemote(eventType, remoteNames, this::countersFor);
+        }
         return type != null ? table.routeFor(type, this::countersFor) : table.routeFor(eventType, this::countersFor);
     }
 
     private ConsumerChannel[] targetsIn(RouteTable table, Held held) {
-        return routeOf(table, held.type(), held.counters().eventType).targets(held.snapshot());
+        return routeOf(table, held.type(), held.counters().eventType, held.remoteNames()).targets(held.snapshot());
     }
 
     /**
@@ -151,13 +176,16 @@ final class AsyncEventBus implements EventBus {
      *
      * @return false when a queue was full and {@code wait} is false (nothing queued then)
      */
-    private boolean send(ConsumerChannel[] targets, EventTypeCounters typeCounters, Object snapshot, boolean wait) {
-        ConsumerChannel[] reserved = reserveAll(targets, typeCounters, wait);
+    private boolean send(ConsumerChannel[] targets, Route route, Object snapshot, boolean wait, Runnable done) {
+        EventTypeCounters typeCounters = route.counters();
+        ConsumerChannel[] reserved = Reservations.reserveAll(targets, typeCounters, wait, overflowTimeoutNanos,
+                queueCapacity);
         if (reserved == null) {
             return false;
         }
         typeCounters.published.increment();
-        Envelope envelope = new Envelope(snapshot, typeCounters, reserved.length == 1);
+        Envelope envelope = new Envelope(snapshot, typeCounters, reserved.length == 1, route.typeNames(),
+                done == null ? null : new Completion(reserved.length, done, log));
         boolean madeReady = false;
         for (ConsumerChannel target : reserved) {
             madeReady |= target.enqueue(envelope);
@@ -174,13 +202,14 @@ final class AsyncEventBus implements EventBus {
      * it changed since, the event is routed again (with the same answer of the policy), so that it can neither
      * be appended to the hold after a hand-over nor overtake held events.
      */
-    private boolean unhandled(RouteTable table, Route route, Object snapshot, Class<?> type, boolean wait) {
+    private boolean unhandled(RouteTable table, Route route, Object snapshot, Class<?> type, List<String> remoteNames,
+            boolean wait, Runnable done) {
         Disposition decided = null;
         long deadline = 0;
         while (true) {
             UnhandledEventPolicy current = policy;
             if (current == null) {
-                return lastResortOrUnhandled(table, route.counters(), snapshot, wait);
+                return lastResortOrUnhandled(table, route, snapshot, wait, done);
             }
             if (decided == null) {
                 decided = ask(current, route);
@@ -188,17 +217,19 @@ final class AsyncEventBus implements EventBus {
             if (decided == Disposition.UNHANDLED) {
                 countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()
                         + " gives them up");
+                Completion.run(done, log);
                 return true;
             }
             if (decided != Disposition.HOLD) {
-                return lastResortOrUnhandled(table, route.counters(), snapshot, wait);
+                return lastResortOrUnhandled(table, route, snapshot, wait, done);
             }
             if (deadline == 0) {
                 deadline = System.nanoTime() + overflowTimeoutNanos;
             }
-            Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis());
+            Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis(), remoteNames);
             HoldOutcome outcome = hold(table, current, held, wait ? deadline : 0);
             if (outcome == HoldOutcome.HELD) {
+                Completion.run(done, log);
                 return true;
             }
             if (outcome == HoldOutcome.FULL) {
@@ -208,10 +239,10 @@ final class AsyncEventBus implements EventBus {
                 decided = null; // another policy, or none, decides now
             }
             table = routes;
-            route = routeOf(table, type, route.counters().eventType);
+            route = routeOf(table, type, route.counters().eventType, remoteNames);
             ConsumerChannel[] targets = route.targets(snapshot);
             if (targets.length > 0) {
-                return send(targets, route.counters(), snapshot, wait);
+                return send(targets, route, snapshot, wait, done);
             }
         }
     }
@@ -278,12 +309,13 @@ final class AsyncEventBus implements EventBus {
     }
 
     /** The bus's own rules for an event no behaviour takes: consumers of last resort, else counted unhandled. */
-    private boolean lastResortOrUnhandled(RouteTable table, EventTypeCounters typeCounters, Object snapshot,
-            boolean wait) {
+    private boolean lastResortOrUnhandled(RouteTable table, Route route, Object snapshot, boolean wait,
+            Runnable done) {
         if (table.lastResort.length > 0) {
-            return send(table.lastResort, typeCounters, snapshot, wait);
+            return send(table.lastResort, route, snapshot, wait, done);
         }
-        countUnhandled(typeCounters, "no consumer of last resort is installed");
+        countUnhandled(route.counters(), "no consumer of last resort is installed");
+        Completion.run(done, log);
         return true;
     }
 
@@ -298,65 +330,6 @@ final class AsyncEventBus implements EventBus {
             log.warn("No smart behaviour consumes events of type {} and {}; such events are counted as "
                     + "'unhandled' (Gogo: bus:stats).", typeCounters.eventType, why);
         }
-    }
-
-    /**
-     * Reserve a queue slot in every target, or none: waits for room up to the overflow timeout if {@code wait}.
-     * A target that is stalled (its queue full and its notify() not returned for the overflow timeout, see
-     * {@link StallPolicy}) is skipped and the event counted as discarded for it.
-     *
-     * @return the targets with a slot ({@code targets} itself when none was skipped), or null when a queue was
-     *         full and {@code wait} is false (nothing reserved then)
-     */
-    private ConsumerChannel[] reserveAll(ConsumerChannel[] targets, EventTypeCounters typeCounters, boolean wait) {
-        long deadline = 0;
-        boolean[] skip = null;
-        for (int i = 0; i < targets.length; i++) {
-            ConsumerChannel target = targets[i];
-            while (!target.tryReserve()) {
-                if (target.isClosed()) {
-                    break; // it is leaving; the envelope will be counted as discarded
-                }
-                long now = System.nanoTime();
-                if (target.stalledWhenFull(now, overflowTimeoutNanos)) {
-                    if (skip == null) {
-                        skip = new boolean[targets.length];
-                    }
-                    skip[i] = true;
-                    break;
-                }
-                if (deadline == 0) {
-                    deadline = now + overflowTimeoutNanos;
-                }
-                if (!wait || now - deadline >= 0) {
-                    for (int j = 0; j < i; j++) {
-                        if (skip == null || !skip[j]) {
-                            targets[j].release();
-                        }
-                    }
-                    if (!wait) {
-                        return null;
-                    }
-                    throw Overflows.queueFull(typeCounters.eventType, target.spec, queueCapacity,
-                            TimeUnit.NANOSECONDS.toMillis(overflowTimeoutNanos));
-                }
-                LockSupport.parkNanos(50_000);
-            }
-        }
-        return skip == null ? targets : withoutSkipped(targets, skip, typeCounters);
-    }
-
-    private static ConsumerChannel[] withoutSkipped(ConsumerChannel[] targets, boolean[] skip,
-            EventTypeCounters typeCounters) {
-        List<ConsumerChannel> kept = new ArrayList<>(targets.length);
-        for (int i = 0; i < targets.length; i++) {
-            if (skip[i]) {
-                targets[i].skipped(typeCounters);
-            } else {
-                kept.add(targets[i]);
-            }
-        }
-        return kept.toArray(new ConsumerChannel[0]);
     }
 
     private EventTypeCounters countersFor(String eventType) {
@@ -374,7 +347,8 @@ final class AsyncEventBus implements EventBus {
      * the new table is published: every publisher that can reach the behaviour queues behind them.
      */
     void addConsumer(ConsumerSpec spec) {
-        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log);
+        ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log,
+                spec.forwarder() ? new Orphans(this, log) : null);
         boolean madeReady;
         synchronized (consumersLock) {
             ConsumerChannel old = channels.put(spec.serviceId(), channel);

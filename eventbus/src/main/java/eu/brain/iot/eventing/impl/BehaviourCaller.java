@@ -2,6 +2,7 @@ package eu.brain.iot.eventing.impl;
 
 import java.util.HashMap;
 import java.util.HashSet;
+import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
@@ -12,6 +13,7 @@ import org.osgi.service.log.Logger;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+import eu.brain.iot.eventing.spi.EventForwarder;
 
 /**
  * Hands events to one behaviour: fetches the behaviour object on the first delivery, makes the behaviour's own
@@ -54,7 +56,9 @@ final class BehaviourCaller {
                     throw new IllegalStateException("the behaviour service is no longer available");
                 }
             }
-            if (spec.untyped()) {
+            if (spec.forwarder()) {
+                ((EventForwarder) behaviour).forward(envelope.type(), typeNames(envelope), toMap(envelope));
+            } else if (spec.untyped()) {
                 ((UntypedSmartBehaviour) behaviour).notify(envelope.type(), toMap(envelope));
             } else {
                 @SuppressWarnings("unchecked")
@@ -73,7 +77,13 @@ final class BehaviourCaller {
                         + "events, and further failures on this type are counted in the bus statistics "
                         + "(Gogo: bus:stats) rather than logged.", spec.name(), spec.bundle(), envelope.type(), t);
             }
+        } finally {
+            envelope.consumed();
         }
+    }
+
+    private static List<String> typeNames(Envelope envelope) {
+        return envelope.typeNames != null ? envelope.typeNames : List.of(envelope.type());
     }
 
     /** Give the behaviour object back, if it was ever fetched; the caller is not used afterwards. */
@@ -93,7 +103,7 @@ final class BehaviourCaller {
     }
 
     @SuppressWarnings("unchecked")
-    private Map<String, ?> toMap(Envelope envelope) {
+    private Map<String, Object> toMap(Envelope envelope) {
         return envelope.payload instanceof Map<?, ?> map
                 ? EventMaps.copyMap((Map<String, ?>) map)
                 : EventMaps.toMap(envelope.payload);
@@ -109,6 +119,15 @@ final class BehaviourCaller {
             return (BrainIoTEvent) EventMaps.convert(event, own);
         }
         Class<?> own = ownClassByName.computeIfAbsent(envelope.type(), spec.classes());
+        if (own == null && envelope.typeNames != null) {
+            // an event from another node whose own class this bundle cannot see: the first supertype it consumes
+            for (String name : envelope.typeNames) {
+                if (spec.consumed().contains(name)) {
+                    own = ownClassByName.computeIfAbsent(name, spec.classes());
+                    break;
+                }
+            }
+        }
         if (own == null) {
             throw new IllegalStateException("bundle " + spec.bundle() + " cannot load the event class "
                     + envelope.type() + " that it declares it consumes");

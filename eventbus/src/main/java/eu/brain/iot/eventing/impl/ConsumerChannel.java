@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 
 import org.osgi.service.log.Logger;
 
@@ -54,6 +55,7 @@ final class ConsumerChannel {
     }
 
     final ConsumerSpec spec;
+    private final Consumer<Envelope> orphans;
     /** Changed in place by a reconfiguration of the bus; applies to the next reservations. */
     private volatile int capacity;
     private final DeliveryPool pool;
@@ -83,6 +85,15 @@ final class ConsumerChannel {
     private volatile Object runner;
 
     ConsumerChannel(ConsumerSpec spec, int capacity, DeliveryPool pool, Logger log) {
+        this(spec, capacity, pool, log, null);
+    }
+
+    /**
+     * @param orphans for a forwarder: takes the events still queued when it goes away (they are published again, to
+     *        whoever takes them now), instead of discarding them; {@code null} for a behaviour
+     */
+    ConsumerChannel(ConsumerSpec spec, int capacity, DeliveryPool pool, Logger log, Consumer<Envelope> orphans) {
+        this.orphans = orphans;
         this.spec = spec;
         this.capacity = capacity;
         this.pool = pool;
@@ -250,7 +261,12 @@ final class ConsumerChannel {
         int count = 0;
         Envelope e;
         while ((e = queue.poll()) != null) {
+            if (orphans != null) {
+                orphans.accept(e);
+                continue;
+            }
             e.counters.discarded.increment();
+            e.consumed();
             count++;
         }
         if (count > 0 && discardLogged.compareAndSet(false, true)) {

@@ -1,5 +1,7 @@
 package eu.brain.iot.eventing.impl;
 
+import java.util.List;
+
 /**
  * One accepted event on its way to one or more consumers. Immutable once queued: the payload is the bus's own
  * snapshot (a {@link eu.brain.iot.eventing.api.BrainIoTEvent} or a {@code Map} for untyped events) and is only
@@ -10,11 +12,29 @@ final class Envelope {
     final Object payload;
     final EventTypeCounters counters;
     final boolean exclusive;
+    /** The type name, then its supertypes and interfaces as routed; {@code null} when only the name is known. */
+    final List<String> typeNames;
+    /** Told when each consumer is done with the envelope; {@code null} for local events. */
+    final Completion completion;
 
     Envelope(Object payload, EventTypeCounters counters, boolean exclusive) {
+        this(payload, counters, exclusive, null, null);
+    }
+
+    Envelope(Object payload, EventTypeCounters counters, boolean exclusive, List<String> typeNames,
+            Completion completion) {
         this.payload = payload;
         this.counters = counters;
         this.exclusive = exclusive;
+        this.typeNames = typeNames;
+        this.completion = completion;
+    }
+
+    /** One consumer is done with this envelope (called it, or discarded it). */
+    void consumed() {
+        if (completion != null) {
+            completion.countDown();
+        }
     }
 
     String type() {

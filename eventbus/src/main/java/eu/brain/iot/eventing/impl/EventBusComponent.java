@@ -36,8 +36,10 @@ import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.monitoring.api.ConsumerStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
+import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.eventing.spi.HeldEvents;
 import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.RemoteEvents;
 import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
 /**
@@ -47,10 +49,10 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
  * injection cannot follow them); everything else arrives through the constructor. A configuration change is
  * applied in place ({@link #modified}): the bus, its queues and its hold stay, so no queued event is lost to it.
  */
-@Component(service = { EventBus.class, EventBusStatistics.class, HeldEvents.class },
+@Component(service = { EventBus.class, EventBusStatistics.class, HeldEvents.class, RemoteEvents.class },
         configurationPid = BusConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL)
 @Designate(ocd = BusConfig.class)
-public final class EventBusComponent implements EventBus, EventBusStatistics, HeldEvents {
+public final class EventBusComponent implements EventBus, EventBusStatistics, HeldEvents, RemoteEvents {
 
     /** How long a delivery worker beyond {@code delivery.workers} (added for a stalled behaviour) stays idle. */
     static final long WORKER_KEEP_ALIVE_NANOS = TimeUnit.SECONDS.toNanos(1);
@@ -121,6 +123,38 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
     }
 
     void removeUntypedSmartBehaviour(ServiceReference<?> ref) {
+        bus.removeConsumer(serviceId(ref));
+    }
+
+    @Reference(cardinality = ReferenceCardinality.MULTIPLE, policy = ReferencePolicy.DYNAMIC,
+            unbind = "removeEventForwarder")
+    void addEventForwarder(ComponentServiceObjects<EventForwarder> forwarder) {
+        ServiceReference<EventForwarder> ref = forwarder.getServiceReference();
+        Object destination = ref.getProperty(EventForwarder.DESTINATION_PROPERTY);
+        Set<String> consumed = new LinkedHashSet<>(strings(ref.getProperty(SmartBehaviourNamespace.CONSUMED_PROPERTY)));
+        Bundle bundle = ref.getBundle();
+        String bundleName = bundle == null ? "?" : bundle.getSymbolicName();
+        if (!(destination instanceof String node) || node.isBlank() || consumed.isEmpty()) {
+            log.error("Event forwarder {} (bundle {}) names no destination ({}) or no consumed types; it gets no "
+                    + "events.", serviceId(ref), bundleName, EventForwarder.DESTINATION_PROPERTY);
+            return;
+        }
+        Filter filter = null;
+        Object filterText = ref.getProperty(SmartBehaviourNamespace.FILTER_PROPERTY);
+        if (filterText instanceof String text && !text.isBlank()) {
+            try {
+                filter = FrameworkUtil.createFilter(text);
+            } catch (InvalidSyntaxException e) {
+                log.error("Event forwarder to {} has an invalid filter \"{}\": {}; it gets no events.", node, text,
+                        e.getMessage());
+                return;
+            }
+        }
+        bus.addConsumer(new ConsumerSpec(serviceId(ref), "fabric:" + node + "#" + serviceId(ref), bundleName,
+                Set.copyOf(consumed), filter, false, true, handle(forwarder), className -> null, node));
+    }
+
+    void removeEventForwarder(ServiceReference<?> ref) {
         bus.removeConsumer(serviceId(ref));
     }
 
@@ -236,6 +270,12 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
     @Override
     public boolean tryDeliver(String eventType, Map<String, Object> eventData) {
         return bus.tryDeliver(eventType, eventData);
+    }
+
+    @Override
+    public boolean tryDeliverRemote(String eventType, List<String> typeNames, Map<String, Object> eventData,
+            Runnable done) {
+        return bus.publishRemote(eventType, typeNames, eventData, done);
     }
 
     @Override

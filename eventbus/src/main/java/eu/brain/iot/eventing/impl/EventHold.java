@@ -22,9 +22,10 @@ final class EventHold {
 
     /**
      * One held event: the bus's snapshot (an event object, or a map for an untyped event), its class ({@code null}
-     * when untyped: then it is routed by {@code counters.eventType}), and when it was held.
+     * when untyped: then it is routed by {@code counters.eventType}), when it was held, and for an event from
+     * another node the type names it is routed by (to local behaviours only), else {@code null}.
      */
-    record Held(Object snapshot, Class<?> type, EventTypeCounters counters, long since) {
+    record Held(Object snapshot, Class<?> type, EventTypeCounters counters, long since, List<String> remoteNames) {
     }
 
     private final ArrayDeque<Held> queue = new ArrayDeque<>();
@@ -60,7 +61,9 @@ final class EventHold {
 
     /** Queue one event that leaves the hold (or is re-dispatched) for these behaviours, waiting for none. */
     static boolean enqueue(Held held, ConsumerChannel[] to) {
-        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1);
+        List<String> names = held.remoteNames != null ? held.remoteNames
+                : held.type != null ? List.copyOf(RouteTable.typeNames(held.type)) : null;
+        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1, names, null);
         boolean madeReady = false;
         for (ConsumerChannel c : to) {
             c.forceReserve();

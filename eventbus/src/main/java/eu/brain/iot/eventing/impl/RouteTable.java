@@ -4,6 +4,7 @@ import java.lang.ref.WeakReference;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
+import java.util.HashSet;
 import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
@@ -24,6 +25,7 @@ final class RouteTable {
     final ConsumerChannel[] lastResort;
     private final ConcurrentHashMap<String, Route> byClass = new ConcurrentHashMap<>();
     private final ConcurrentHashMap<String, Route> byName = new ConcurrentHashMap<>();
+    private final ConcurrentHashMap<String, Route> byRemoteName = new ConcurrentHashMap<>();
 
     RouteTable(Collection<ConsumerChannel> channels) {
         List<ConsumerChannel> named = new ArrayList<>();
@@ -39,7 +41,7 @@ final class RouteTable {
     Route routeFor(Class<?> eventClass, Function<String, EventTypeCounters> counters) {
         Route route = byClass.get(eventClass.getName());
         if (route == null || route.type.get() != eventClass) {
-            route = compute(typeNames(eventClass), counters.apply(eventClass.getName()), eventClass);
+            route = compute(typeNames(eventClass), counters.apply(eventClass.getName()), eventClass, false);
             byClass.put(eventClass.getName(), route);
         }
         return route;
@@ -48,19 +50,49 @@ final class RouteTable {
     /** The route of an untyped event: behaviours that consume exactly this type name. */
     Route routeFor(String eventType, Function<String, EventTypeCounters> counters) {
         return byName.computeIfAbsent(eventType,
-                t -> compute(new LinkedHashSet<>(List.of(t)), counters.apply(t), null));
+                t -> compute(new LinkedHashSet<>(List.of(t)), counters.apply(t), null, false));
     }
 
-    private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type) {
+    /**
+     * The route of an event from another node: the local behaviours that consume any of {@code typeNames} (its
+     * type, then its supertypes and interfaces), never a forwarder. Cached by the type name: a type's hierarchy is
+     * the same whoever publishes it.
+     */
+    Route routeForRemote(String eventType, List<String> typeNames, Function<String, EventTypeCounters> counters) {
+        return byRemoteName.computeIfAbsent(eventType,
+                t -> compute(new LinkedHashSet<>(typeNames), counters.apply(t), null, true));
+    }
+
+    private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type, boolean remote) {
         List<ConsumerChannel> plain = new ArrayList<>();
         List<ConsumerChannel> filtered = new ArrayList<>();
+        Set<String> destinations = new HashSet<>();
+        boolean forwarders = false;
         for (ConsumerChannel c : typedOrNamed) {
+            if (remote && c.spec.forwarder()) {
+                continue;
+            }
             if (c.spec.consumed().stream().anyMatch(names::contains)) {
-                (c.spec.filter() == null ? plain : filtered).add(c);
+                if (c.spec.filter() != null) {
+                    filtered.add(c);
+                    forwarders |= c.spec.forwarder();
+                } else if (!c.spec.forwarder() || destinations.add(c.spec.forwardTo())) {
+                    plain.add(c); // one unfiltered forwarder per destination: a node receives each event once
+                }
             }
         }
         return new Route(new WeakReference<>(type), counters, plain.toArray(ConsumerChannel[]::new),
-                filtered.toArray(ConsumerChannel[]::new), List.copyOf(names));
+                filtered.toArray(ConsumerChannel[]::new), List.copyOf(names), forwarders);
+    }
+
+    /** The names an event from another node is routed by: its type first, then the others given, without repeats. */
+    static List<String> remoteNames(String eventType, List<String> typeNames) {
+        Set<String> names = new LinkedHashSet<>();
+        names.add(eventType);
+        if (typeNames != null) {
+            typeNames.stream().filter(n -> n != null && !n.isEmpty()).forEach(names::add);
+        }
+        return List.copyOf(names);
     }
 
     /** The names of the class, its superclasses and all its interfaces. */
@@ -86,7 +118,7 @@ final class RouteTable {
      * {@code typeNames} is the type, then its supertypes and interfaces (what an unhandled-event policy is told).
      */
     record Route(WeakReference<Class<?>> type, EventTypeCounters counters, ConsumerChannel[] plain,
-            ConsumerChannel[] filtered, List<String> typeNames) {
+            ConsumerChannel[] filtered, List<String> typeNames, boolean filteredForwarders) {
 
         /**
          * The behaviours one event goes to: the unfiltered ones, and the filtered ones that match its fields.
@@ -102,11 +134,22 @@ final class RouteTable {
                     : EventMaps.toMap(snapshot);
             List<ConsumerChannel> matching = new ArrayList<>(Arrays.asList(plain));
             for (ConsumerChannel c : filtered) {
-                if (c.spec.filter().matches(fields)) {
+                if (c.spec.filter().matches(fields) && !(filteredForwarders && c.spec.forwarder()
+                        && forwardsAlready(matching, c.spec.forwardTo()))) {
                     matching.add(c);
                 }
             }
             return matching.toArray(ConsumerChannel[]::new);
+        }
+
+        /** Whether a forwarder to this destination is among the targets already (one copy per node). */
+        private static boolean forwardsAlready(List<ConsumerChannel> targets, String destination) {
+            for (ConsumerChannel t : targets) {
+                if (destination.equals(t.spec.forwardTo())) {
+                    return true;
+                }
+            }
+            return false;
         }
     }
 }

@@ -9,9 +9,13 @@
  * the consumer's queue. Here the bus asks the policy on the publisher's thread, keeps held events in one queue in
  * publish order, and hands them to a new behaviour in the same step that makes it visible to publishers: no held
  * event is overtaken, lost or delivered twice.
+ * <p>
+ * Since 1.1 the package also joins a node to a fabric of nodes: an {@link eu.brain.iot.eventing.spi.EventForwarder}
+ * takes events for the behaviours of another node, routed by the bus like a behaviour, and
+ * {@link eu.brain.iot.eventing.spi.RemoteEvents} delivers events from other nodes to the local behaviours only.
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package eu.brain.iot.eventing.spi;
 
 import org.osgi.annotation.bundle.Export;

@@ -6,6 +6,9 @@ import java.util.Set;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
+import org.osgi.framework.Filter;
+import org.osgi.framework.FrameworkUtil;
+import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.service.log.Logger;
 
 import eu.brain.iot.eventing.api.BrainIoTEvent;
@@ -13,6 +16,7 @@ import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
 import eu.brain.iot.eventing.spi.HeldEvents;
 import eu.brain.iot.eventing.spi.HeldType;
+import eu.brain.iot.eventing.spi.RemoteEvents;
 import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
 /**
@@ -21,7 +25,7 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
  * {@code bus-core}, see pom.xml), never in a bundle; it lives here, beside the core it wraps, so that a change of the
  * core is compiled against it in the bus's own build.
  */
-public final class BusCore implements EventBus, HeldEvents {
+public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
 
     private final AsyncEventBus bus;
     private final AtomicLong ids = new AtomicLong();
@@ -38,6 +42,54 @@ public final class BusCore implements EventBus, HeldEvents {
         bus.addConsumer(new ConsumerSpec(id, "behaviour#" + id, "test.bundle", Set.of(consumed), null, false, false,
                 BehaviourHandle.of(behaviour), className -> null));
         return id;
+    }
+
+    /**
+     * Register a typed behaviour with a filter over the fields ({@code null} for none) that loads event classes by
+     * name from its own class loader, as a behaviour's bundle does.
+     */
+    public long addTypedBehaviour(Object behaviour, String filter, String... consumed) {
+        long id = ids.incrementAndGet();
+        ClassLoader loader = behaviour.getClass().getClassLoader();
+        bus.addConsumer(new ConsumerSpec(id, "typed#" + id, "test.bundle", Set.of(consumed), filter(filter), false,
+                false, BehaviourHandle.of(behaviour), className -> {
+                    try {
+                        return Class.forName(className, false, loader);
+                    } catch (ClassNotFoundException e) {
+                        return null;
+                    }
+                }));
+        return id;
+    }
+
+    /** Register an untyped behaviour with a filter over the fields ({@code null} for none). */
+    public long addUntypedBehaviour(Object behaviour, String filter, String... consumed) {
+        long id = ids.incrementAndGet();
+        bus.addConsumer(new ConsumerSpec(id, "untyped#" + id, "test.bundle", Set.of(consumed), filter(filter), false,
+                true, BehaviourHandle.of(behaviour), className -> null));
+        return id;
+    }
+
+    /** Register an event forwarder to another node, as the bus's component does when its service appears. */
+    public long addForwarder(Object forwarder, String destination, String filter, String... consumed) {
+        long id = ids.incrementAndGet();
+        bus.addConsumer(new ConsumerSpec(id, "fabric:" + destination + "#" + id, "test.bundle", Set.of(consumed),
+                filter(filter), false, true, BehaviourHandle.of(forwarder), className -> null, destination));
+        return id;
+    }
+
+    private static Filter filter(String text) {
+        try {
+            return text == null || text.isBlank() ? null : FrameworkUtil.createFilter(text);
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalArgumentException(e.getMessage(), e);
+        }
+    }
+
+    @Override
+    public boolean tryDeliverRemote(String eventType, List<String> typeNames, Map<String, Object> eventData,
+            Runnable done) {
+        return bus.publishRemote(eventType, typeNames, eventData, done);
     }
 
     public void removeBehaviour(long id) {

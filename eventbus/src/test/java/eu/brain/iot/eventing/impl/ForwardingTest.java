@@ -1,0 +1,145 @@
+package eu.brain.iot.eventing.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicInteger;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.eventing.api.BrainIoTEvent;
+import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+import eu.brain.iot.eventing.spi.EventForwarder;
+
+/**
+ * The bus's side of a fabric: forwarders are routed like behaviours (supertypes, filters), one copy per destination;
+ * events from another node reach local behaviours only, and their completion runs after {@code notify} returned.
+ */
+class ForwardingTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(20);
+
+    public static class Moved extends BrainIoTEvent {
+        public String robotId;
+
+        public Moved() {
+        }
+
+        Moved(String robotId) {
+            this.robotId = robotId;
+        }
+    }
+
+    public static class Docked extends Moved {
+        public Docked() {
+        }
+
+        Docked(String robotId) {
+            super(robotId);
+        }
+    }
+
+    static final class Recorder implements EventForwarder {
+        final List<String> got = new CopyOnWriteArrayList<>();
+        final List<List<String>> names = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void forward(String eventType, List<String> typeNames, Map<String, Object> properties) {
+            got.add(eventType + ":" + properties.get("robotId"));
+            names.add(typeNames);
+        }
+    }
+
+    final RecordingLogger log = new RecordingLogger();
+    final BusCore bus = new BusCore(16, 1_000, log.logger);
+
+    @AfterEach
+    void close() {
+        bus.close();
+    }
+
+    @Test
+    void forwardersAreRoutedLikeBehavioursOneCopyPerDestination() {
+        Recorder nodeB = new Recorder();
+        Recorder nodeC = new Recorder();
+        bus.addForwarder(nodeB, "B", null, Moved.class.getName());
+        bus.addForwarder(nodeB, "B", "(robotId=r1)", Docked.class.getName()); // overlaps the first: one copy only
+        bus.addForwarder(nodeC, "C", "(robotId=r2)", Moved.class.getName());
+
+        bus.deliver(new Docked("r1"));
+        bus.deliver(new Moved("r2"));
+
+        await().atMost(DEADLINE).until(() -> nodeB.got.size() == 2 && nodeC.got.size() == 1);
+        assertThat(nodeB.got).containsExactly(Docked.class.getName() + ":r1", Moved.class.getName() + ":r2");
+        assertThat(nodeB.names.get(0)).startsWith(Docked.class.getName(), Moved.class.getName());
+        assertThat(nodeC.got).containsExactly(Moved.class.getName() + ":r2");
+    }
+
+    @Test
+    void remoteEventsReachLocalBehavioursOnlyAndCompleteAfterNotify() throws Exception {
+        Recorder forwarder = new Recorder();
+        bus.addForwarder(forwarder, "B", null, Moved.class.getName());
+        CountDownLatch inside = new CountDownLatch(1);
+        CountDownLatch release = new CountDownLatch(1);
+        List<String> seen = new CopyOnWriteArrayList<>();
+        bus.addUntypedBehaviour((UntypedSmartBehaviour) (type, fields) -> {
+            inside.countDown();
+            try {
+                release.await(20, TimeUnit.SECONDS);
+            } catch (InterruptedException ex) {
+                Thread.currentThread().interrupt();
+            }
+            seen.add(type + ":" + fields.get("robotId"));
+        }, null, Moved.class.getName());
+        AtomicInteger done = new AtomicInteger();
+
+        // a subtype the receiving node routes by its supertype, as the publishing node named them
+        boolean accepted = bus.tryDeliverRemote("some.remote.Docked",
+                List.of("some.remote.Docked", Moved.class.getName()), Map.of("robotId", "r9"), done::incrementAndGet);
+
+        assertThat(accepted).isTrue();
+        assertThat(inside.await(20, TimeUnit.SECONDS)).isTrue();
+        assertThat(done.get()).as("not done while notify() runs").isZero();
+        release.countDown();
+        await().atMost(DEADLINE).until(() -> done.get() == 1);
+        assertThat(seen).containsExactly("some.remote.Docked:r9");
+        assertThat(forwarder.got).as("an event from another node is never forwarded again").isEmpty();
+    }
+
+    @Test
+    void eventsQueuedForAForwarderThatGoesAwayArePublishedAgainNotDiscarded() throws Exception {
+        CountDownLatch inside = new CountDownLatch(1);
+        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
+            inside.countDown();
+            try {
+                new CountDownLatch(1).await(20, TimeUnit.SECONDS); // a node that does not take more
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "B", null, Moved.class.getName());
+        for (int i = 1; i <= 5; i++) {
+            bus.deliver(new Moved("r" + i));
+        }
+        assertThat(inside.await(20, TimeUnit.SECONDS)).isTrue();
+
+        bus.removeBehaviour(id); // its node left: the 4 events still queued go to whoever takes them now (nobody)
+
+        await().atMost(DEADLINE).until(() -> bus.statistics(Moved.class.getName()).unhandled == 4);
+        assertThat(bus.statistics(Moved.class.getName()).discarded).isZero();
+    }
+
+    @Test
+    void aRemoteEventNoBehaviourTakesIsDoneAtOnce() {
+        AtomicInteger done = new AtomicInteger();
+        assertThat(bus.tryDeliverRemote("x.Unknown", List.of(), Map.of("a", 1), done::incrementAndGet)).isTrue();
+        assertThat(done.get()).isEqualTo(1);
+        assertThat(bus.statistics("x.Unknown").unhandled).isEqualTo(1);
+    }
+}

@@ -1,0 +1,223 @@
+package eu.brain.iot.federation.impl;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.UnknownHostException;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Hashtable;
+import java.util.List;
+import java.util.Locale;
+
+import org.osgi.framework.BundleContext;
+import org.osgi.framework.Filter;
+import org.osgi.framework.FrameworkUtil;
+import org.osgi.framework.InvalidSyntaxException;
+import org.osgi.framework.ServiceReference;
+import org.osgi.framework.ServiceRegistration;
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.ConfigurationPolicy;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.log.Logger;
+import org.osgi.service.log.LoggerFactory;
+import org.osgi.service.metatype.annotations.Designate;
+import org.osgi.util.tracker.ServiceTracker;
+
+import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
+import eu.brain.iot.eventing.spi.EventForwarder;
+import eu.brain.iot.eventing.spi.RemoteEvents;
+
+/**
+ * A node's membership in a fabric, as a Declarative Services component: active only with its configuration (PID
+ * {@value FabricConfig#PID}); without it the node runs alone. It follows the node's smart behaviours (their consumed
+ * types and filters, the whole whiteboard but the consumers of last resort) as its interest, registers the forwarders
+ * the fabric asks for as {@link EventForwarder} services, and gives events from other nodes to the bus's
+ * {@link RemoteEvents}.
+ * <p>
+ * A node without a usable key or state folder does not join: the component stays active with no fabric node and says
+ * why (log, {@code fabric:nodes}). Threads: SCR's (activation), the framework's service events (the tracker, which
+ * hands the interest to the fabric node's own thread), and the fabric node's (see {@link FabricNode}).
+ */
+@Component(service = FabricComponent.class, configurationPid = FabricConfig.PID,
+        configurationPolicy = ConfigurationPolicy.REQUIRE)
+@Designate(ocd = FabricConfig.class)
+public final class FabricComponent implements Host {
+
+    /** Framework property naming the node when the configuration does not. */
+    public static final String NODE_NAME_PROPERTY = "fabric.node.name";
+    /** Framework property naming the node's fabric state folder when the configuration does not. */
+    public static final String STATE_DIR_PROPERTY = "fabric.node.state.dir";
+
+    private final BundleContext context;
+    private final RemoteEvents remoteEvents;
+    private final Logger log;
+    private final FabricNode node;
+    private final String problem;
+    private final ServiceTracker<Object, InterestEntry> behaviours;
+
+    @Activate
+    public FabricComponent(BundleContext context, FabricConfig config, @Reference RemoteEvents remoteEvents,
+            @Reference(service = LoggerFactory.class) Logger log) throws InvalidSyntaxException {
+        this.context = context;
+        this.remoteEvents = remoteEvents;
+        this.log = log;
+        FabricNode joined = null;
+        String why = null;
+        try {
+            Settings settings = settings(config, context);
+            joined = new FabricNode(settings, this);
+        } catch (IOException | IllegalArgumentException | IllegalStateException e) {
+            why = e.getMessage();
+            log.error("This node does not join a fabric: {}", why);
+        }
+        this.node = joined;
+        this.problem = why;
+        Filter filter = FrameworkUtil.createFilter("(&(|(objectClass=" + SmartBehaviour.class.getName()
+                + ")(objectClass=" + UntypedSmartBehaviour.class.getName() + "))("
+                + SmartBehaviourNamespace.CONSUMED_PROPERTY + "=*))");
+        this.behaviours = new ServiceTracker<>(context, filter, null) {
+            @Override
+            public InterestEntry addingService(ServiceReference<Object> ref) {
+                InterestEntry e = entry(ref);
+                announce();
+                return e;
+            }
+
+            @Override
+            public void modifiedService(ServiceReference<Object> ref, InterestEntry old) {
+                announce();
+            }
+
+            @Override
+            public void removedService(ServiceReference<Object> ref, InterestEntry old) {
+                announce();
+            }
+        };
+        if (node != null) {
+            behaviours.open();
+            announce();
+            node.start();
+        }
+    }
+
+    static Settings settings(FabricConfig config, BundleContext context) {
+        String name = config.node_name();
+        if (name.isBlank()) {
+            name = context.getProperty(NODE_NAME_PROPERTY);
+        }
+        if (name == null || name.isBlank()) {
+            name = hostName();
+        }
+        if (config.key_file().isBlank()) {
+            throw new IllegalArgumentException("no signing key is configured (key.file in PID " + FabricConfig.PID
+                    + "): create one with 'fabric:keygen FILE', copy it to every node, and set key.file");
+        }
+        String state = config.state_dir();
+        if (state.isBlank()) {
+            state = context.getProperty(STATE_DIR_PROPERTY);
+        }
+        Path stateDir = state == null || state.isBlank()
+                ? Path.of(System.getProperty("user.home"), ".brain-iot", "federation", config.fabric_name(), name)
+                : Path.of(state);
+        return new Settings(config.broker_uri(), config.fabric_name(), name, config.username(), config._password(),
+                config.tls(), config.trust_store(), config._trust_store_password(), Path.of(config.key_file()),
+                stateDir, config.keep_alive_s(), config.session_expiry_s(), config.resend_timeout_ms(),
+                config.max_pending(), config.max_age_ms(), config.batch_max_events());
+    }
+
+    private static String hostName() {
+        try {
+            String host = InetAddress.getLocalHost().getHostName().toLowerCase(Locale.ROOT);
+            String clean = host.replaceAll("[^a-z0-9._-]", "-");
+            return clean.isEmpty() ? "node" : clean;
+        } catch (UnknownHostException e) {
+            return "node";
+        }
+    }
+
+    private static InterestEntry entry(ServiceReference<?> ref) {
+        Object consumed = ref.getProperty(SmartBehaviourNamespace.CONSUMED_PROPERTY);
+        List<String> types = new ArrayList<>();
+        if (consumed instanceof String s) {
+            types.add(s);
+        } else if (consumed instanceof String[] a) {
+            types.addAll(List.of(a));
+        } else if (consumed instanceof java.util.Collection<?> c) {
+            c.forEach(o -> types.add(String.valueOf(o)));
+        }
+        Object filter = ref.getProperty(SmartBehaviourNamespace.FILTER_PROPERTY);
+        return new InterestEntry(types, filter instanceof String f ? f : null);
+    }
+
+    private void announce() {
+        if (node == null) {
+            return;
+        }
+        ServiceReference<Object>[] refs = behaviours.getServiceReferences();
+        List<InterestEntry> entries = new ArrayList<>();
+        if (refs != null) {
+            for (ServiceReference<Object> ref : refs) {
+                InterestEntry e = entry(ref);
+                if (!e.types().isEmpty()) {
+                    entries.add(e);
+                }
+            }
+        }
+        node.localInterest(entries);
+    }
+
+    @Deactivate
+    void deactivate() {
+        if (node != null) {
+            behaviours.close();
+            node.close();
+        }
+    }
+
+    /** @return the fabric node, or {@code null} when this node did not join (see {@link #problem()}) */
+    FabricNode node() {
+        return node;
+    }
+
+    /** @return why this node did not join, or {@code null} */
+    String problem() {
+        return problem;
+    }
+
+    @Override
+    public RemoteEvents remoteEvents() {
+        return remoteEvents;
+    }
+
+    @Override
+    public AutoCloseable addForwarder(String destination, InterestEntry entry, EventForwarder forwarder) {
+        Hashtable<String, Object> props = new Hashtable<>();
+        props.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, entry.types().toArray(String[]::new));
+        if (entry.filter() != null) {
+            props.put(SmartBehaviourNamespace.FILTER_PROPERTY, entry.filter());
+        }
+        props.put(EventForwarder.DESTINATION_PROPERTY, destination);
+        ServiceRegistration<EventForwarder> reg = context.registerService(EventForwarder.class, forwarder, props);
+        return () -> {
+            try {
+                reg.unregister();
+            } catch (IllegalStateException gone) {
+                // unregistered with the bundle already
+            }
+        };
+    }
+
+    @Override
+    public void warn(String message, Object... args) {
+        log.warn(message, args);
+    }
+
+    @Override
+    public void info(String message, Object... args) {
+        log.info(message, args);
+    }
+}

@@ -1,0 +1,455 @@
+package eu.brain.iot.federation.impl;
+
+import java.io.IOException;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.ArrayList;
+import java.util.Collection;
+import java.util.LinkedHashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.stream.Stream;
+
+import eu.brain.iot.federation.impl.Wire.MalformedException;
+
+/**
+ * A node's membership in a fabric: announces what its behaviours consume, registers forwarders for what other nodes'
+ * behaviours consume, carries forwarded events to those nodes with end-to-end acknowledgement, and delivers the
+ * events other nodes send it. Free of OSGi: {@link FabricComponent} runs it in a framework, tests with the bus core.
+ * <p>
+ * Threads and what they own:
+ * <ul>
+ * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
+ * {@link RemoteNode}s and their forwarders, the {@link Inbox}es, acknowledgements, connection events, the resend
+ * check; Paho's threads only queue work here;</li>
+ * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): takes batches from the {@link Outbox}es and
+ * publishes them;</li>
+ * <li>the bus's delivery workers call the forwarders, which append to the outboxes (see there).</li>
+ * </ul>
+ */
+public final class FabricNode implements AutoCloseable {
+
+    /** How often unacknowledged events are checked against the resend timeout, as a share of it. */
+    static final int RESEND_CHECKS_PER_TIMEOUT = 4;
+    /** Back-off before offering again events the bus refused (a full local queue). */
+    static final long BUS_RETRY_MILLIS = 2;
+    /** Back-off between first connection attempts. */
+    static final long CONNECT_RETRY_MILLIS = 1000;
+
+    private final Settings settings;
+    private final FabricKey key;
+    private final Host host;
+    private final Wire wire = new Wire();
+    private final Topics topics;
+    private final MqttLink link;
+    private final ScheduledExecutorService in;
+    private final Sender sender;
+
+    private final Map<String, RemoteNode> nodes = new ConcurrentHashMap<>();
+    private final Membership membership;
+    private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
+    private final Map<String, Inbox> inboxes = new ConcurrentHashMap<>();
+    private final Set<Inbox> refused = new LinkedHashSet<>();
+    private final AtomicBoolean ackPending = new AtomicBoolean();
+    private volatile List<InterestEntry> localInterest = List.of();
+    private volatile boolean closed;
+    private volatile boolean joined;
+    /** A connection attempt is scheduled (inbound thread only). */
+    private boolean connecting;
+    /** The broker's unreachability was logged, until the next connection (inbound thread only). */
+    private boolean warnedUnreachable;
+    /** Whether the node was connected before (inbound thread only). */
+    private boolean joinedBefore;
+
+    /**
+     * @throws IOException when the key cannot be read or the state folder not used: the node does not join
+     */
+    public FabricNode(Settings settings, Host host) throws IOException {
+        this.settings = settings;
+        this.host = host;
+        this.key = FabricKey.read(settings.keyFile());
+        this.topics = new Topics(settings.fabric());
+        Files.createDirectories(settings.stateDir());
+        openOutboxes();
+        this.in = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-in"));
+        String self = settings.node();
+        this.link = new MqttLink(settings, key, topics.status(self),
+                wire.status(new Wire.Status(self, Wire.Status.OFFLINE, System.currentTimeMillis())),
+                new MqttLink.Listener() {
+                    @Override
+                    public void connected() {
+                        in.execute(FabricNode.this::onConnected);
+                    }
+
+                    @Override
+                    public void disconnected(String why) {
+                        if (!closed) {
+                            host.warn("Fabric {}: node {} lost the broker {} ({}); reconnecting", settings.fabric(),
+                                    self, settings.brokerUri(), why);
+                            in.execute(FabricNode.this::connectOnce);
+                        }
+                    }
+
+                    @Override
+                    public void message(String topic, byte[] payload, String signature) {
+                        in.execute(() -> onMessage(topic, payload, signature));
+                    }
+                });
+        this.membership = new Membership(settings.fabric(), host, this::node, this::outbox,
+                destination -> (type, names, data) -> forward(destination, type, names, data));
+        this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
+    }
+
+    /** Start: connect (retrying until the broker answers), then send. Never waits for the broker. */
+    public void start() {
+        sender.start();
+        in.execute(this::connectOnce);
+        long period = Math.max(10, settings.resendTimeoutMillis() / RESEND_CHECKS_PER_TIMEOUT);
+        in.scheduleWithFixedDelay(() -> sender.resendCheck(false), period, period, TimeUnit.MILLISECONDS);
+    }
+
+    private void connectOnce() {
+        if (closed || link.isConnected() || connecting) {
+            return;
+        }
+        try {
+            link.connect(); // connectComplete follows on Paho's thread
+        } catch (IOException | RuntimeException | Error e) {
+            if (!warnedUnreachable) {
+                host.warn("Fabric {}: node {} cannot reach the broker: {}; trying again every {} ms",
+                        settings.fabric(), settings.node(), e instanceof IOException ? e.getMessage() : e.toString(),
+                        CONNECT_RETRY_MILLIS);
+                warnedUnreachable = true;
+            }
+            connecting = true;
+            in.schedule(() -> {
+                connecting = false;
+                connectOnce();
+            }, CONNECT_RETRY_MILLIS, TimeUnit.MILLISECONDS);
+        }
+    }
+
+    private void openOutboxes() throws IOException {
+        Path dir = settings.stateDir().resolve("outbox");
+        if (!Files.isDirectory(dir)) {
+            return;
+        }
+        try (Stream<Path> files = Files.list(dir)) {
+            for (Path f : files.filter(p -> p.getFileName().toString().endsWith(".journal")).toList()) {
+                String node = f.getFileName().toString().replaceFirst("\\.journal$", "");
+                if (Settings.NAME.matcher(node).matches()) {
+                    outbox(node);
+                }
+            }
+        }
+    }
+
+    Outbox outbox(String destination) {
+        return outboxes.computeIfAbsent(destination, d -> {
+            try {
+                return new Outbox(d, settings.stateDir().resolve("outbox").resolve(d + ".journal"),
+                        settings.maxPending(), node(d).stats);
+            } catch (IOException e) {
+                throw new IllegalStateException("the fabric journal for node " + d + " cannot be opened in "
+                        + settings.stateDir() + ": " + e.getMessage(), e);
+            }
+        });
+    }
+
+    RemoteNode node(String name) {
+        return nodes.computeIfAbsent(name, RemoteNode::new);
+    }
+
+    // ---- connection ------------------------------------------------------------------------------------------
+
+    private void onConnected() {
+        warnedUnreachable = false;
+        boolean again = joinedBefore;
+        joinedBefore = true;
+        try {
+            link.subscribe(topics.subscriptions(settings.node()));
+            publishPresence(Wire.Status.ONLINE);
+            publishInterest();
+            joined = true;
+            host.info("Fabric {}: node {} joined through {}{}", settings.fabric(), settings.node(),
+                    settings.brokerUri(), again ? " again" : "");
+        } catch (IOException | InterruptedException e) {
+            host.warn("Fabric {}: node {} could not announce itself: {}", settings.fabric(), settings.node(),
+                    e.getMessage());
+        }
+        sender.resendCheck(true); // what the broker may have lost is sent again
+        flushAcks();
+    }
+
+    private void publishPresence(String state) throws IOException, InterruptedException {
+        String self = settings.node();
+        link.publish(topics.status(self), wire.status(new Wire.Status(self, state, System.currentTimeMillis())),
+                true);
+    }
+
+    private void publishInterest() throws IOException, InterruptedException {
+        String self = settings.node();
+        link.publish(topics.interest(self),
+                wire.interest(new Wire.Interest(self, System.currentTimeMillis(), localInterest)), true);
+    }
+
+    /** What this node's behaviours consume now; announced at once when connected. */
+    public void localInterest(Collection<InterestEntry> entries) {
+        List<InterestEntry> sorted = entries.stream().distinct()
+                .sorted((a, b) -> (a.types() + "|" + a.filter()).compareTo(b.types() + "|" + b.filter())).toList();
+        localInterest = sorted;
+        in.execute(() -> {
+            if (link.isConnected()) {
+                try {
+                    publishInterest();
+                } catch (IOException | InterruptedException e) {
+                    host.warn("Fabric {}: the interest of node {} was not announced ({}); it is at the next "
+                            + "connection", settings.fabric(), settings.node(), e.getMessage());
+                }
+            }
+        });
+    }
+
+    // ---- received messages -----------------------------------------------------------------------------------
+
+    private void onMessage(String topic, byte[] payload, String signature) {
+        Topics.Parsed t = topics.parse(topic);
+        if (t == null) {
+            return;
+        }
+        boolean own = t.node().equals(settings.node());
+        if (own && (Topics.INTEREST.equals(t.kind()) || Topics.STATUS.equals(t.kind()))) {
+            return;
+        }
+        String claimed = own ? t.other() : t.node();
+        if (claimed == null || !Settings.NAME.matcher(claimed).matches()) {
+            return;
+        }
+        if (payload.length == 0 && !own) {
+            membership.interestCleared(claimed); // a retained message removed
+            return;
+        }
+        NodeStats stats = node(claimed).stats;
+        if (signature == null) {
+            stats.unsigned.increment();
+            return;
+        }
+        if (!key.verify(topic, payload, signature)) {
+            stats.badSignature.increment();
+            return;
+        }
+        try {
+            switch (t.kind()) {
+            case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats);
+            case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats);
+            case Topics.INTEREST -> membership.onInterest(claimed, wire.readInterest(payload), stats);
+            case Topics.STATUS -> {
+                membership.onStatus(claimed, wire.readStatus(payload), stats);
+                sender.wake(); // a node back online: what was kept for it goes now
+            }
+            default -> stats.malformed.increment();
+            }
+        } catch (MalformedException e) {
+            stats.malformed.increment();
+        } catch (IOException e) {
+            host.warn("Fabric {}: the state of node {} cannot be written in {}: {}", settings.fabric(),
+                    settings.node(), settings.stateDir(), e.getMessage());
+        }
+    }
+
+    private boolean fresh(long sent, NodeStats stats) {
+        if (Math.abs(System.currentTimeMillis() - sent) > settings.maxAgeMillis()) {
+            stats.replayed.increment();
+            return false;
+        }
+        return true;
+    }
+
+    private void onBatch(String from, Wire.Batch batch, NodeStats stats) throws IOException {
+        if (!batch.from().equals(from) || !batch.to().equals(settings.node())) {
+            stats.malformed.increment();
+            return;
+        }
+        if (!fresh(batch.sent(), stats)) {
+            return;
+        }
+        Inbox inbox = inboxes.get(from);
+        if (inbox == null) {
+            inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats);
+            inboxes.put(from, inbox);
+        }
+        long dupsBefore = stats.duplicates.sum();
+        if (inbox.accept(batch.epoch(), batch.events(), host.remoteEvents(), this::eventsDone)) {
+            retryLater(inbox);
+        }
+        if (stats.duplicates.sum() != dupsBefore) {
+            eventsDone();
+        }
+    }
+
+    private void retryLater(Inbox inbox) {
+        if (refused.add(inbox) && refused.size() == 1) {
+            in.schedule(this::offerRefused, BUS_RETRY_MILLIS, TimeUnit.MILLISECONDS);
+        }
+    }
+
+    private void offerRefused() {
+        List<Inbox> again = new ArrayList<>(refused);
+        refused.clear();
+        for (Inbox inbox : again) {
+            if (inbox.offer(host.remoteEvents(), this::eventsDone)) {
+                retryLater(inbox);
+            }
+        }
+    }
+
+    /** Called by a delivery worker when events of a publisher are done: acknowledge soon, on the inbound thread. */
+    private void eventsDone() {
+        if (ackPending.compareAndSet(false, true)) {
+            in.execute(this::flushAcks);
+        }
+    }
+
+    private void flushAcks() {
+        ackPending.set(false);
+        if (!link.isConnected()) {
+            return;
+        }
+        long now = System.currentTimeMillis();
+        for (Inbox inbox : inboxes.values()) {
+            try {
+                Wire.Ack ack = inbox.ackToSend(settings.node(), now);
+                if (ack != null) {
+                    link.publish(topics.acks(inbox.publisher(), settings.node()), wire.ack(ack), false);
+                }
+            } catch (IOException e) {
+                host.warn("Fabric {}: acknowledgement to {} not sent ({}); sent again later", settings.fabric(),
+                        inbox.publisher(), e.getMessage());
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                return;
+            }
+        }
+    }
+
+    private void onAck(String from, Wire.Ack ack, NodeStats stats) throws IOException {
+        if (!ack.from().equals(from) || !ack.to().equals(settings.node())) {
+            stats.malformed.increment();
+            return;
+        }
+        if (!fresh(ack.sent(), stats)) {
+            return;
+        }
+        Outbox outbox = outboxes.get(from);
+        if (outbox != null) {
+            outbox.acked(ack.epoch(), ack.through());
+        }
+    }
+
+    // ---- sending ----------------------------------------------------------------------------------------------
+
+    /** A forwarder's event (on a delivery worker of the bus): kept for its destination, sent by the sender. */
+    private void forward(String destination, String type, List<String> names, Map<String, Object> data) {
+        try {
+            outbox(destination).append(seq -> wire.event(seq, type, names, data));
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            throw new IllegalStateException("the forwarder to " + destination + " was stopped while it waited for "
+                    + "room", e);
+        }
+        sender.wake();
+    }
+
+    // ---- views ------------------------------------------------------------------------------------------------
+
+    /** @return whether the node is connected to the broker and announced */
+    public boolean joined() {
+        return joined && link.isConnected();
+    }
+
+    public String name() {
+        return settings.node();
+    }
+
+    public Settings settings() {
+        return settings;
+    }
+
+    /** One line per known node: its name, presence and interest. */
+    public record NodeView(String node, String status, List<InterestEntry> interest, NodeStats.Snapshot stats) {
+    }
+
+    public List<NodeView> nodes() {
+        Map<String, NodeView> views = new TreeMap<>();
+        views.put(settings.node(), new NodeView(settings.node(), joined() ? "online (this node)" : "joining (this node)",
+                localInterest, new NodeStats().snapshot()));
+        nodes.values().forEach(n -> views.put(n.name, new NodeView(n.name, n.status.name().toLowerCase(),
+                n.interest, n.stats.snapshot())));
+        return new ArrayList<>(views.values());
+    }
+
+    /** Leave the fabric: announce offline, disconnect normally, keep unacknowledged events in the journals. */
+    @Override
+    public void close() {
+        closed = true;
+        try {
+            in.submit(() -> {
+                membership.leaveAll(nodes.values());
+                if (link.isConnected()) {
+                    try {
+                        publishPresence(Wire.Status.OFFLINE);
+                    } catch (IOException | InterruptedException e) {
+                        // the broker sends the Last Will instead
+                    }
+                }
+            }).get(10, TimeUnit.SECONDS);
+        } catch (Exception e) {
+            host.warn("Fabric {}: node {} left without announcing it ({})", settings.fabric(), settings.node(),
+                    e.getMessage());
+        }
+        shutdown(false);
+    }
+
+    /** Stop as a crash would: no offline announcement, no normal disconnection (the broker sends the Last Will). */
+    public void crash() {
+        closed = true;
+        shutdown(true);
+    }
+
+    private void shutdown(boolean abort) {
+        for (Inbox i : inboxes.values()) { // first: no window moves after this instant
+            try {
+                i.close();
+            } catch (IOException e) {
+                host.warn("Fabric {}: window of {} not closed: {}", settings.fabric(), i.publisher(), e.getMessage());
+            }
+        }
+        in.shutdownNow();
+        try {
+            in.awaitTermination(5, TimeUnit.SECONDS);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+        sender.close();
+        if (abort) {
+            link.abort();
+        } else {
+            link.close();
+        }
+        for (Outbox o : outboxes.values()) {
+            try {
+                o.close();
+            } catch (IOException e) {
+                host.warn("Fabric {}: journal for {} not closed: {}", settings.fabric(), o.destination(),
+                        e.getMessage());
+            }
+        }
+    }
+}

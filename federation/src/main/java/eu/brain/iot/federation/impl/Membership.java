@@ -1,0 +1,110 @@
+package eu.brain.iot.federation.impl;
+
+import java.util.Collection;
+import java.util.List;
+import java.util.function.Function;
+
+import eu.brain.iot.eventing.spi.EventForwarder;
+import eu.brain.iot.federation.impl.RemoteNode.Presence;
+
+/**
+ * Which other nodes are online and what their behaviours consume, and the forwarders on the local bus that follow
+ * it: one per interest entry of each online node, added before withdrawn ones go, all gone when the node is offline
+ * (its Last Will, or its goodbye). Signatures are checked before anything reaches this class.
+ * <p>
+ * Threads: the fabric's inbound thread only.
+ */
+final class Membership {
+
+    private final String fabric;
+    private final Host host;
+    private final Function<String, RemoteNode> nodes;
+    private final Function<String, Outbox> outboxes;
+    private final Function<String, EventForwarder> forwarders;
+
+    Membership(String fabric, Host host, Function<String, RemoteNode> nodes, Function<String, Outbox> outboxes,
+            Function<String, EventForwarder> forwarders) {
+        this.fabric = fabric;
+        this.host = host;
+        this.nodes = nodes;
+        this.outboxes = outboxes;
+        this.forwarders = forwarders;
+    }
+
+    private RemoteNode node(String name) {
+        return nodes.apply(name);
+    }
+
+    private void outbox(String name) {
+        outboxes.apply(name);
+    }
+
+    void onInterest(String from, Wire.Interest interest, NodeStats stats) {
+        if (!interest.node().equals(from)) {
+            stats.malformed.increment();
+            return;
+        }
+        RemoteNode node = node(from);
+        if (interest.sent() < node.interestSent) {
+            return; // an older announcement than the one applied
+        }
+        node.interestSent = interest.sent();
+        node.interest = List.copyOf(interest.entries());
+        syncForwarders(node);
+    }
+
+    void interestCleared(String from) {
+        RemoteNode node = node(from);
+        node.interest = List.of();
+        syncForwarders(node);
+    }
+
+    void onStatus(String from, Wire.Status status, NodeStats stats) {
+        if (!status.node().equals(from)) {
+            stats.malformed.increment();
+            return;
+        }
+        RemoteNode node = node(from);
+        Presence before = node.status;
+        node.status = Wire.Status.ONLINE.equals(status.state()) ? Presence.ONLINE : Presence.OFFLINE;
+        if (before != node.status) {
+            host.info("Fabric {}: node {} is {}", fabric, from, status.state());
+        }
+        syncForwarders(node);
+    }
+
+    /** Forwarders for exactly the interest of an online node: new entries first, then the withdrawn ones go. */
+    void syncForwarders(RemoteNode node) {
+        List<InterestEntry> wanted = node.status == Presence.ONLINE ? node.interest : List.of();
+        if (!wanted.isEmpty()) {
+            outbox(node.name); // before the bus can route to it
+        }
+        EventForwarder forwarder = forwarders.apply(node.name);
+        for (InterestEntry e : wanted) {
+            if (!node.forwarders.containsKey(e)) {
+                node.forwarders.put(e, host.addForwarder(node.name, e, forwarder));
+            }
+        }
+        for (var it = node.forwarders.entrySet().iterator(); it.hasNext();) {
+            var entry = it.next();
+            if (!wanted.contains(entry.getKey())) {
+                it.remove();
+                try {
+                    entry.getValue().close();
+                } catch (Exception e) {
+                    host.warn("Fabric {}: a forwarder to {} did not close: {}", fabric, node.name,
+                            e.getMessage());
+                }
+            }
+        }
+    }
+
+
+    /** This node leaves: no forwarder stays. */
+    void leaveAll(Collection<RemoteNode> all) {
+        for (RemoteNode n : all) {
+            n.status = Presence.OFFLINE;
+            syncForwarders(n);
+        }
+    }
+}

@@ -1,0 +1,195 @@
+package eu.brain.iot.federation.impl;
+
+import java.io.ByteArrayOutputStream;
+import java.io.IOException;
+import java.io.UncheckedIOException;
+import java.nio.charset.StandardCharsets;
+import java.time.temporal.TemporalAccessor;
+import java.util.ArrayList;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+
+import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.core.type.TypeReference;
+import com.fasterxml.jackson.databind.JsonNode;
+import com.fasterxml.jackson.databind.ObjectMapper;
+import com.fasterxml.jackson.databind.module.SimpleModule;
+import com.fasterxml.jackson.databind.ser.std.ToStringSerializer;
+
+/**
+ * The fabric's wire format, JSON through Jackson. Events travel in the form untyped behaviours get them (a map of
+ * fields; nested data objects as maps, arrays and collections as lists); {@code java.time} values as their ISO-8601
+ * text, which the receiving bus converts back for a typed behaviour (OSGi Converter), byte arrays as Base64.
+ * <p>
+ * Stateless and thread-safe (Jackson's mapper is).
+ */
+final class Wire {
+
+    /** Most events accepted in one message; a bigger batch is refused as malformed. */
+    static final int MAX_BATCH_EVENTS = 10_000;
+
+    private static final TypeReference<Map<String, Object>> MAP = new TypeReference<>() {
+    };
+
+    private final ObjectMapper mapper = new ObjectMapper().registerModule(new SimpleModule("fabric-wire")
+            .addSerializer(TemporalAccessor.class, ToStringSerializer.instance));
+
+    /** One event as its publisher keeps it (journal) and sends it: {"seq","type","types","data"}. */
+    byte[] event(long seq, String type, List<String> types, Map<String, Object> data) {
+        Map<String, Object> e = new LinkedHashMap<>();
+        e.put("seq", seq);
+        e.put("type", type);
+        e.put("types", types);
+        e.put("data", data);
+        return write(e);
+    }
+
+    /** A batch of events already encoded by {@link #event}. */
+    byte[] batch(String from, String to, String epoch, long sent, List<byte[]> events) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream(64 + events.size() * 256);
+        out.writeBytes(("{\"from\":" + quote(from) + ",\"to\":" + quote(to) + ",\"epoch\":" + quote(epoch)
+                + ",\"sent\":" + sent + ",\"events\":[").getBytes(StandardCharsets.UTF_8));
+        for (int i = 0; i < events.size(); i++) {
+            if (i > 0) {
+                out.write(',');
+            }
+            out.writeBytes(events.get(i));
+        }
+        out.writeBytes("]}".getBytes(StandardCharsets.UTF_8));
+        return out.toByteArray();
+    }
+
+    /** A received batch. */
+    record Batch(String from, String to, String epoch, long sent, List<Event> events) {
+    }
+
+    /** A received event. */
+    record Event(long seq, String type, List<String> types, Map<String, Object> data) {
+    }
+
+    Batch readBatch(byte[] payload) throws MalformedException {
+        JsonNode root = tree(payload);
+        JsonNode events = root.path("events");
+        if (!events.isArray() || events.size() > MAX_BATCH_EVENTS) {
+            throw new MalformedException("a batch needs an 'events' array of at most " + MAX_BATCH_EVENTS);
+        }
+        List<Event> list = new ArrayList<>(events.size());
+        for (JsonNode e : events) {
+            String type = e.path("type").asText("");
+            if (!e.path("seq").canConvertToLong() || type.isEmpty() || !e.path("data").isObject()) {
+                throw new MalformedException("an event needs 'seq', 'type' and an object 'data'");
+            }
+            List<String> types = new ArrayList<>();
+            e.path("types").forEach(t -> types.add(t.asText()));
+            list.add(new Event(e.path("seq").asLong(), type, types, mapper.convertValue(e.path("data"), MAP)));
+        }
+        return new Batch(text(root, "from"), text(root, "to"), text(root, "epoch"), number(root, "sent"), list);
+    }
+
+    /** An acknowledgement: the receiver {@code from} took every event of {@code epoch} up to {@code through}. */
+    record Ack(String from, String to, String epoch, long through, long sent) {
+    }
+
+    byte[] ack(Ack ack) {
+        return write(ack);
+    }
+
+    Ack readAck(byte[] payload) throws MalformedException {
+        JsonNode root = tree(payload);
+        return new Ack(text(root, "from"), text(root, "to"), text(root, "epoch"), number(root, "through"),
+                number(root, "sent"));
+    }
+
+    /** What a node's behaviours consume, retained under its interest topic. */
+    record Interest(String node, long sent, List<InterestEntry> entries) {
+    }
+
+    byte[] interest(Interest interest) {
+        return write(interest);
+    }
+
+    Interest readInterest(byte[] payload) throws MalformedException {
+        JsonNode root = tree(payload);
+        List<InterestEntry> entries = new ArrayList<>();
+        for (JsonNode e : root.path("entries")) {
+            List<String> types = new ArrayList<>();
+            e.path("types").forEach(t -> types.add(t.asText()));
+            if (types.isEmpty()) {
+                throw new MalformedException("an interest entry needs 'types'");
+            }
+            String filter = e.path("filter").asText("");
+            entries.add(new InterestEntry(types, filter.isEmpty() ? null : filter));
+        }
+        return new Interest(text(root, "node"), number(root, "sent"), entries);
+    }
+
+    /** A node's presence, retained under its status topic; the broker publishes the offline one as Last Will. */
+    record Status(String node, String state, long sent) {
+        static final String ONLINE = "online";
+        static final String OFFLINE = "offline";
+    }
+
+    byte[] status(Status status) {
+        return write(status);
+    }
+
+    Status readStatus(byte[] payload) throws MalformedException {
+        JsonNode root = tree(payload);
+        return new Status(text(root, "node"), text(root, "state"), number(root, "sent"));
+    }
+
+    private JsonNode tree(byte[] payload) throws MalformedException {
+        try {
+            JsonNode root = mapper.readTree(payload);
+            if (root == null || !root.isObject()) {
+                throw new MalformedException("a JSON object is expected");
+            }
+            return root;
+        } catch (IOException e) {
+            throw new MalformedException("not JSON: " + e.getMessage());
+        }
+    }
+
+    private static String text(JsonNode root, String field) throws MalformedException {
+        JsonNode n = root.path(field);
+        if (!n.isTextual() || n.asText().isEmpty()) {
+            throw new MalformedException("field '" + field + "' (text) is missing");
+        }
+        return n.asText();
+    }
+
+    private static long number(JsonNode root, String field) throws MalformedException {
+        JsonNode n = root.path(field);
+        if (!n.canConvertToLong()) {
+            throw new MalformedException("field '" + field + "' (number) is missing");
+        }
+        return n.asLong();
+    }
+
+    private String quote(String s) {
+        try {
+            return mapper.writeValueAsString(s);
+        } catch (JsonProcessingException e) {
+            throw new UncheckedIOException(e);
+        }
+    }
+
+    private byte[] write(Object value) {
+        try {
+            return mapper.writeValueAsBytes(value);
+        } catch (JsonProcessingException e) {
+            throw new IllegalArgumentException("an event field cannot be written as JSON: " + e.getOriginalMessage(),
+                    e);
+        }
+    }
+
+    /** A message that is not in the wire format. */
+    static final class MalformedException extends Exception {
+        private static final long serialVersionUID = 1L;
+
+        MalformedException(String message) {
+            super(message);
+        }
+    }
+}

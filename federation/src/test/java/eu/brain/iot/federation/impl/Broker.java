@@ -1,0 +1,140 @@
+package eu.brain.iot.federation.impl;
+
+import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
+import java.net.Socket;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.concurrent.TimeUnit;
+
+import org.awaitility.Awaitility;
+
+import com.hivemq.embedded.EmbeddedHiveMQ;
+
+/**
+ * A real MQTT 5 broker for a test, on a free port of 127.0.0.1: Mosquitto (Debian's binary, as a process of its own)
+ * or HiveMQ Community Edition embedded in the test's JVM. Both keep no state across a restart (Mosquitto's default;
+ * HiveMQ in memory), so a restart loses every queued message and session: what the fabric's end-to-end
+ * acknowledgement must make up for.
+ */
+abstract class Broker implements AutoCloseable {
+
+    static final Path MOSQUITTO = Path.of("/usr/sbin/mosquitto");
+
+    enum Kind { MOSQUITTO, HIVEMQ }
+
+    final int port;
+    final Path dir;
+
+    Broker(Path dir) throws IOException {
+        this.dir = dir;
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            this.port = s.getLocalPort();
+        }
+    }
+
+    static Broker of(Kind kind, Path dir) throws Exception {
+        Broker b = kind == Kind.MOSQUITTO ? new Mosquitto(dir) : new HiveMq(dir);
+        b.start();
+        return b;
+    }
+
+    String uri() {
+        return "tcp://127.0.0.1:" + port;
+    }
+
+    abstract void start() throws Exception;
+
+    abstract void stop() throws Exception;
+
+    void restart() throws Exception {
+        stop();
+        start();
+    }
+
+    @Override
+    public void close() throws Exception {
+        stop();
+    }
+
+    void awaitListening() {
+        Awaitility.await("broker on port " + port).atMost(Duration.ofSeconds(60)).pollInterval(Duration.ofMillis(50))
+                .until(() -> {
+                    try (Socket s = new Socket(InetAddress.getLoopbackAddress(), port)) {
+                        return true;
+                    } catch (IOException e) {
+                        return false;
+                    }
+                });
+    }
+
+    static final class Mosquitto extends Broker {
+        private Process process;
+
+        Mosquitto(Path dir) throws IOException {
+            super(dir);
+        }
+
+        @Override
+        void start() throws Exception {
+            Path conf = dir.resolve("mosquitto.conf");
+            Files.createDirectories(dir);
+            Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\n");
+            process = new ProcessBuilder(MOSQUITTO.toString(), "-c", conf.toString())
+                    .redirectErrorStream(true).redirectOutput(dir.resolve("mosquitto.log").toFile()).start();
+            awaitListening();
+        }
+
+        @Override
+        void stop() throws Exception {
+            if (process != null) {
+                process.destroy();
+                if (!process.waitFor(10, TimeUnit.SECONDS)) {
+                    process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
+                }
+                process = null;
+            }
+        }
+    }
+
+    static final class HiveMq extends Broker {
+        private EmbeddedHiveMQ hivemq;
+
+        HiveMq(Path dir) throws IOException {
+            super(dir);
+        }
+
+        @Override
+        void start() throws Exception {
+            Path conf = dir.resolve("conf");
+            Files.createDirectories(conf);
+            Files.createDirectories(dir.resolve("data"));
+            Files.createDirectories(dir.resolve("extensions"));
+            Files.writeString(conf.resolve("config.xml"), """
+                    <?xml version="1.0"?>
+                    <hivemq>
+                      <listeners>
+                        <tcp-listener><port>%d</port><bind-address>127.0.0.1</bind-address></tcp-listener>
+                      </listeners>
+                      <persistence><mode>in-memory</mode></persistence>
+                      <anonymous-usage-statistics><enabled>false</enabled></anonymous-usage-statistics>
+                    </hivemq>
+                    """.formatted(port));
+            hivemq = EmbeddedHiveMQ.builder().withConfigurationFolder(conf).withDataFolder(dir.resolve("data"))
+                    .withExtensionsFolder(dir.resolve("extensions")).build();
+            hivemq.start().get(60, TimeUnit.SECONDS);
+            awaitListening();
+        }
+
+        @Override
+        void stop() throws Exception {
+            if (hivemq != null) {
+                hivemq.stop().get(60, TimeUnit.SECONDS);
+                hivemq.close();
+                hivemq = null;
+            }
+        }
+    }
+}

@@ -1,0 +1,275 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Set;
+import java.util.concurrent.atomic.AtomicBoolean;
+import java.util.concurrent.atomic.AtomicLong;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+import eu.brain.iot.federation.impl.Events.Docked;
+import eu.brain.iot.federation.impl.Events.Moved;
+import eu.brain.iot.federation.impl.Events.Nobody;
+import eu.brain.iot.federation.impl.Events.Recorder;
+
+/**
+ * Several fabric nodes in one JVM (each: the real bus core and a real {@link FabricNode}) joined by a real MQTT 5
+ * broker started by the test on a free port: Mosquitto (skipped where its binary is missing) and embedded HiveMQ CE.
+ */
+class FabricTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String MOVED = Moved.class.getName();
+
+    @TempDir
+    Path tmp;
+    Broker broker;
+    Path key;
+    final List<TestNode> nodes = new ArrayList<>();
+
+    @AfterEach
+    void tearDown(org.junit.jupiter.api.TestInfo info) throws Exception {
+        StringBuilder report = new StringBuilder(info.getDisplayName()).append('\n');
+        for (TestNode n : nodes) {
+            n.log.forEach(l -> report.append(n.name).append(": ").append(l).append('\n'));
+        }
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target", "fabric-test-" + info.getTestMethod().get().getName() + ".log"), report);
+        for (TestNode n : nodes) {
+            try {
+                n.close();
+            } catch (RuntimeException e) {
+                // crashed already
+            }
+        }
+        if (broker != null) {
+            broker.close();
+        }
+    }
+
+    void startBroker(Broker.Kind kind) throws Exception {
+        if (kind == Broker.Kind.MOSQUITTO) {
+            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
+                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
+        }
+        broker = Broker.of(kind, tmp.resolve("broker"));
+        key = tmp.resolve("fabric.key");
+        FabricKey.generate(key);
+    }
+
+    Settings settings(String name) {
+        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
+                .withKeepAlive(2);
+    }
+
+    TestNode node(String name) throws Exception {
+        TestNode n = new TestNode(name, settings(name));
+        nodes.add(n);
+        n.start();
+        return n;
+    }
+
+    /** A node whose behaviour is registered with its bus before it joins, as a node restarting with it. */
+    TestNode node(String name, Recorder behaviour) throws Exception {
+        TestNode n = new TestNode(name, settings(name));
+        nodes.add(n);
+        n.addBehaviour(behaviour, null, MOVED);
+        n.start();
+        return n;
+    }
+
+    /** Wait until {@code on} routes to {@code remote}'s current interest. */
+    static void awaitInterest(TestNode on, TestNode remote, int entries) {
+        await("interest of " + remote.name + " seen by " + on.name).atMost(DEADLINE).until(() -> on.fabric.nodes()
+                .stream().anyMatch(v -> v.node().equals(remote.name) && v.status().equals("online")
+                        && v.interest().size() == entries));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void eventsGoOnlyToNodesWhoseBehavioursTakeThem(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        TestNode c = node("c");
+        Recorder onlyR1 = new Recorder();
+        Recorder all = new Recorder();
+        Recorder local = new Recorder();
+        b.addBehaviour(onlyR1, "(robotId=r1)", MOVED);
+        long cId = c.addBehaviour(all, null, MOVED);
+        a.addBehaviour(local, null, MOVED);
+        awaitInterest(a, b, 1);
+        awaitInterest(a, c, 1);
+
+        a.bus.deliver(new Docked("r1", 1, 7)); // a subtype: matched by its supertype, as on the local bus
+        a.bus.deliver(new Moved("r2", 2));
+        a.bus.deliver(new Nobody()); // no node takes it: it stays on a, counted unhandled there
+
+        await().atMost(DEADLINE).until(() -> onlyR1.got.size() == 1 && all.got.size() == 2 && local.got.size() == 2);
+        Moved atB = onlyR1.got.get(0);
+        assertThat(atB).isInstanceOf(Docked.class);
+        assertThat(((Docked) atB).dock).isEqualTo(7);
+        assertThat(atB.robotId).isEqualTo("r1");
+        assertThat(atB.timestamp).as("java.time values cross as ISO text and come back typed").isNotNull();
+        assertThat(all.seqs()).containsExactly(1L, 2L);
+        assertThat(a.statsOf("b").sent()).as("the filtered-out event never left a for b").isEqualTo(1);
+        assertThat(a.statsOf("c").sent()).isEqualTo(2);
+        assertThat(a.bus.statistics(Nobody.class.getName()).unhandled).isEqualTo(1);
+        await().atMost(DEADLINE).until(() -> a.statsOf("b").backlog() == 0 && a.statsOf("c").backlog() == 0);
+
+        // c's behaviour goes away: its interest is withdrawn and a stops sending there
+        c.removeBehaviour(cId);
+        awaitInterest(a, c, 0);
+        a.bus.deliver(new Moved("r3", 3));
+        a.bus.deliver(new Moved("r1", 4));
+        await().atMost(DEADLINE).until(() -> onlyR1.got.size() == 2 && local.got.size() == 4);
+        assertThat(a.statsOf("c").sent()).isEqualTo(2);
+        assertThat(all.got).hasSize(2);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void exactlyOnceInOrderAcrossABrokerRestart(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder r = new Recorder();
+        b.addBehaviour(r, null, MOVED);
+        awaitInterest(a, b, 1);
+
+        int total = 3000;
+        Thread publisher = new Thread(() -> {
+            for (int i = 1; i <= total; i++) {
+                a.bus.deliver(new Moved("r1", i));
+                if (i % 100 == 0) {
+                    pause(5); // a steady stream, so that the restart falls in the middle of it
+                }
+            }
+        });
+        publisher.start();
+        await().atMost(DEADLINE).until(() -> r.got.size() >= total / 4);
+        broker.restart();
+        publisher.join(DEADLINE.toMillis());
+
+        await().atMost(DEADLINE).until(() -> r.got.size() >= total && a.statsOf("b").backlog() == 0);
+        assertThat(r.seqs()).as("every event once, in publish order").isEqualTo(range(1, total));
+        assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aReceiverCrashedAndRestartedMissesNothing(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder r = new Recorder();
+        b.addBehaviour(r, null, MOVED);
+        awaitInterest(a, b, 1);
+
+        int total = 3000;
+        AtomicLong published = new AtomicLong();
+        AtomicBoolean stop = new AtomicBoolean();
+        Thread publisher = new Thread(() -> {
+            for (int i = 1; i <= total && !stop.get(); i++) {
+                a.bus.deliver(new Moved("r1", i));
+                published.set(i);
+                if (i % 50 == 0) {
+                    pause(5);
+                }
+            }
+        });
+        publisher.start();
+        await().atMost(DEADLINE).until(() -> r.got.size() >= total / 5);
+        r.dieWith(b); // like kill -9: no behaviour runs any more, no goodbye; the broker sends b's Last Will
+        nodes.remove(b);
+        await("b offline at a").atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
+        Recorder r2 = new Recorder();
+        TestNode b2 = node("b", r2); // the same name and state folder
+        publisher.join(DEADLINE.toMillis());
+
+        long unhandledAtA = a.bus.statistics(MOVED).unhandled; // published while b had no interest
+        List<Long> seqs = new ArrayList<>();
+        String[] report = { "" };
+        try {
+            await().atMost(DEADLINE).conditionEvaluationListener(c -> report[0] = "received " + seqs.size()
+                    + ", unhandled at a " + a.bus.statistics(MOVED).unhandled + ", at b " + b2.bus.statistics(MOVED).unhandled
+                    + ", backlog a->b " + a.statsOf("b") + ", b<-a " + b2.statsOf("a")).until(() -> {
+                seqs.clear();
+                seqs.addAll(r.seqs());
+                seqs.addAll(r2.seqs());
+                return new HashSet<>(seqs).size() + a.bus.statistics(MOVED).unhandled >= total
+                        && a.statsOf("b").backlog() == 0;
+            });
+        } catch (org.awaitility.core.ConditionTimeoutException e) {
+            throw new AssertionError("not all accounted for: " + report[0], e);
+        }
+        Set<Long> distinct = new HashSet<>(seqs);
+        assertThat(distinct.size() + a.bus.statistics(MOVED).unhandled).as("none lost").isEqualTo(total);
+        assertThat(seqs.size() - distinct.size()).as("at most the event caught inside notify() comes twice")
+                .isLessThanOrEqualTo(1);
+        assertThat(isAscending(seqs)).as("publish order: " + seqs).isTrue();
+        assertThat(r2.got).as("received after the restart").isNotEmpty();
+        assertThat(unhandledAtA).as("events published while b had no interest stay on a (its BMS decides)")
+                .isEqualTo(a.bus.statistics(MOVED).unhandled);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aNodeThatDiesLosesItsInterestByItsLastWill(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder r = new Recorder();
+        b.addBehaviour(r, null, MOVED);
+        awaitInterest(a, b, 1);
+        a.bus.deliver(new Moved("r1", 1));
+        await().atMost(DEADLINE).until(() -> r.got.size() == 1);
+
+        long died = System.nanoTime();
+        b.fabric.crash();
+        await().atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
+        long millis = (System.nanoTime() - died) / 1_000_000;
+        assertThat(millis).as("at most 1.5 keep-alive intervals").isLessThanOrEqualTo(3_000);
+
+        a.bus.deliver(new Moved("r1", 2));
+        assertThat(a.bus.statistics(MOVED).unhandled).as("no forwarder for a dead node").isEqualTo(1);
+        assertThat(a.statsOf("b").sent()).isEqualTo(1);
+    }
+
+    static void pause(long millis) {
+        try {
+            Thread.sleep(millis); // pacing a publisher, not synchronisation
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+        }
+    }
+
+    static List<Long> range(long from, long to) {
+        List<Long> l = new ArrayList<>();
+        for (long i = from; i <= to; i++) {
+            l.add(i);
+        }
+        return l;
+    }
+
+    static boolean isAscending(List<Long> seqs) {
+        for (int i = 1; i < seqs.size(); i++) {
+            if (seqs.get(i) < seqs.get(i - 1)) {
+                return false;
+            }
+        }
+        return true;
+    }
+}

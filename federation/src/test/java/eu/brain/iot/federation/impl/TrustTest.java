@@ -1,0 +1,148 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.TimeUnit;
+
+import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
+import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
+import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
+import org.eclipse.paho.mqttv5.common.MqttMessage;
+import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
+import org.eclipse.paho.mqttv5.common.packet.UserProperty;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+import eu.brain.iot.federation.impl.Events.Moved;
+import eu.brain.iot.federation.impl.Events.Recorder;
+
+/**
+ * A node refuses, and counts, events that are unsigned, signed with another key, or replayed (signed too long ago, or
+ * a sequence number it took already), sent by a client of the same broker that is not a member of the fabric; and a
+ * node without the fabric's key does not join.
+ */
+class TrustTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String MOVED = Moved.class.getName();
+
+    @TempDir
+    Path tmp;
+    Broker broker;
+    Path key;
+    TestNode a;
+    TestNode b;
+    MqttAsyncClient attacker;
+
+    @AfterEach
+    void tearDown() throws Exception {
+        if (attacker != null) {
+            attacker.disconnectForcibly(0, 1, false);
+            attacker.close(true);
+        }
+        for (TestNode n : new TestNode[] { a, b }) {
+            if (n != null) {
+                n.close();
+            }
+        }
+        if (broker != null) {
+            broker.close();
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void unsignedWronglySignedAndReplayedEventsAreRefused(Broker.Kind kind) throws Exception {
+        if (kind == Broker.Kind.MOSQUITTO) {
+            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
+                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
+        }
+        broker = Broker.of(kind, tmp.resolve("broker"));
+        key = tmp.resolve("fabric.key");
+        FabricKey.generate(key);
+        a = new TestNode("a", settings("a"));
+        a.start();
+        Recorder r = new Recorder();
+        b = new TestNode("b", settings("b"));
+        b.addBehaviour(r, null, MOVED);
+        b.start();
+        FabricTest.awaitInterest(a, b, 1);
+        a.bus.deliver(new Moved("r1", 1));
+        await().atMost(DEADLINE).until(() -> r.got.size() == 1 && a.statsOf("b").backlog() == 0);
+
+        String epoch = Files.readAllLines(tmp.resolve("state-a/outbox/b.journal"), StandardCharsets.US_ASCII).get(0)
+                .substring("EPOCH ".length());
+        String topic = new Topics("test").events("b", "a");
+        Wire wire = new Wire();
+        FabricKey right = FabricKey.read(key);
+        FabricKey wrong = FabricKey.of(new byte[32]);
+        long now = System.currentTimeMillis();
+        byte[] forged = wire.batch("a", "b", epoch, now,
+                List.of(wire.event(2, MOVED, List.of(MOVED), Map.of("robotId", "forged", "seq", 2))));
+        byte[] old = wire.batch("a", "b", epoch, now - TimeUnit.HOURS.toMillis(1),
+                List.of(wire.event(2, MOVED, List.of(MOVED), Map.of("robotId", "old", "seq", 2))));
+        byte[] replayed = wire.batch("a", "b", epoch, now,
+                List.of(wire.event(1, MOVED, List.of(MOVED), Map.of("robotId", "again", "seq", 1))));
+
+        attacker = new MqttAsyncClient(broker.uri(), "intruder", new MemoryPersistence());
+        attacker.connect(new MqttConnectionOptions()).waitForCompletion(15_000);
+        publish(topic, forged, null);
+        publish(topic, forged, wrong.sign(topic, forged));
+        publish(topic, old, right.sign(topic, old));
+        publish(topic, replayed, right.sign(topic, replayed));
+
+        await().atMost(DEADLINE).until(() -> {
+            NodeStats.Snapshot s = b.statsOf("a");
+            return s.unsigned() == 1 && s.badSignature() == 1 && s.replayed() == 1 && s.duplicates() >= 1;
+        });
+        assertThat(b.statsOf("a").refused()).isEqualTo(3);
+
+        // the genuine second event still comes, as number 2: nothing forged took its place
+        a.bus.deliver(new Moved("r1", 2));
+        await().atMost(DEADLINE).until(() -> r.got.size() >= 2);
+        assertThat(r.got).extracting(m -> m.robotId).containsExactly("r1", "r1");
+        assertThat(r.seqs()).containsExactly(1L, 2L);
+    }
+
+    @Test
+    void aNodeWithoutTheKeyDoesNotJoinAndSaysWhy() {
+        Path missing = tmp.resolve("no-such.key");
+        Settings s = Settings.of("tcp://127.0.0.1:1", "test", "lonely", missing, tmp.resolve("state"));
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> new FabricNode(s, null))
+                .hasMessageContaining("fabric key file").hasMessageContaining("fabric:keygen");
+    }
+
+    @Test
+    void keygenRefusesToOverwriteAKey() throws Exception {
+        Path k = tmp.resolve("k");
+        FabricKey.generate(k);
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> FabricKey.generate(k))
+                .hasMessageContaining("exists already");
+        assertThat(FabricKey.read(k).verify("t", new byte[] { 1 }, FabricKey.read(k).sign("t", new byte[] { 1 })))
+                .isTrue();
+    }
+
+    private void publish(String topic, byte[] payload, String signature) throws Exception {
+        MqttProperties props = new MqttProperties();
+        if (signature != null) {
+            props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, signature)));
+        }
+        attacker.publish(topic, new MqttMessage(payload, 1, false, props)).waitForCompletion(15_000);
+    }
+
+    private Settings settings(String name) {
+        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
+                .withKeepAlive(2);
+    }
+}
