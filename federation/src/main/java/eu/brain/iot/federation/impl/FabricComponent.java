@@ -43,7 +43,7 @@ import eu.brain.iot.eventing.spi.RemoteEvents;
  * hands the interest to the fabric node's own thread), and the fabric node's (see {@link FabricNode}).
  */
 @Component(service = FabricComponent.class, configurationPid = FabricConfig.PID,
-        configurationPolicy = ConfigurationPolicy.REQUIRE)
+        configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)
 @Designate(ocd = FabricConfig.class)
 public final class FabricComponent implements Host {
 
