@@ -20,8 +20,8 @@ public @interface RobotConfig {
     /**
      * Polls a robot stays stopped behind another robot before the binding reports it (a robot-in-front,
      * {@code fromUnloadObstacle} with {@code isObstacle}): 2 polls = 1 s, as the requirements gate's environment
-     * ({@code patience} in WarehouseEnvironment.bip). With 10 (5 s), a head-on meeting took 6-8 s of REQ-2's 10 s
-     * limit on a wait behind a robot before it was resolved, and the paper's warehouse failed REQ-2 in 1 run of 3.
+     * ({@code patience} in WarehouseEnvironment.bip). Longer patience leaves too little of REQ-2's 10 s limit on a
+     * wait behind a robot for the orchestrator to resolve a head-on meeting.
      */
     int patience_polls() default 2;
 

@@ -127,7 +127,7 @@ public final class RobotFleet {
      * Whether the cart the robot's errand says it carries is on the floor, put down by it: the robot stands idle and
      * empty, the cart on the floor, and either the robot's last mission left it there (a place that finished, a pick
      * that failed) or the robot has moved off the cart's cell (taken over while placing, it was sent on to a storage
-     * cell: seen in 1 stop-behaviour run of 4). Right after a pick is sent the robot stands on its cart, idle and
+     * cell). Right after a pick is sent the robot stands on its cart, idle and
      * empty, its last mission the go-to to the cart: that is not it.
      *
      * @return the cell of the cart on the floor, or {@code null}
@@ -236,8 +236,8 @@ public final class RobotFleet {
 
     /**
      * Whether the robot that {@code s} stepped aside for still comes by: it is within two cells and still on a
-     * mission. Only that robot is waited for (two robots sent aside near each other used to wait for each other for
-     * ever), and for {@link #asideNanos} at most.
+     * mission. Only that robot is waited for (two robots sent aside near each other would otherwise wait for each other
+     * for ever), and for {@link #asideNanos} at most.
      */
     private boolean stillPassing(RobotState s, Aside side) {
         if (System.nanoTime() - side.atNanos() > asideNanos || side.passer() == null) {
@@ -337,7 +337,7 @@ public final class RobotFleet {
         if (robots.size() <= eu.brain.iot.behaviours.warehouse.RobotNames.PER_GROUP) {
             // the paper's warehouse (one group): meetings at the door are the orchestrator's (Listing 7); in a larger
             // fleet one robot still coming down met the wave's carriers queued at the door, and they all waited
-            // 12-14 s for its side step (60x30 warehouse, seeds 1 and 2)
+            // longer than REQ-2 allows for its side step
             return true;
         }
         for (Errands.Errand e : down) {
