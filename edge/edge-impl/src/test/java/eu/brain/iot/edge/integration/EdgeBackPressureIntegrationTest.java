@@ -46,8 +46,8 @@ import eu.brain.iot.robotsim.world.MapGenerator;
  * meanwhile are answered to their callers. Once the behaviour is released it receives every command outcome and
  * the newest position of every robot: nothing is dropped but positions replaced by newer ones.
  * <p>
- * With a bus that makes the edge's fleet thread wait for room (the edge before this change), the first round of
- * polls parks the fleet thread for the bus's overflow timeout per event, and the polls stop.
+ * Were the edge's fleet thread to wait for room on the bus, the first round of polls would park it for the bus's
+ * overflow timeout per event, and the polls would stop.
  */
 class EdgeBackPressureIntegrationTest {
 
@@ -96,8 +96,11 @@ class EdgeBackPressureIntegrationTest {
     }
 
     @Test
-    @WithConfiguration(pid = BUS_PID, location = "?", properties = @Property(key = "queue.capacity", value = "16",
-            scalar = Scalar.Integer))
+    @WithConfiguration(pid = BUS_PID, location = "?", properties = {
+        @Property(key = "queue.capacity", value = "16", scalar = Scalar.Integer),
+        // longer than the test: the blocked behaviour is slow to the bus, not stalled (a stalled one stops taking
+        // events, eventbus/README.md), so the edge's events wait for it
+        @Property(key = "overflow.timeout.ms", value = "600000", scalar = Scalar.Long) })
     void aBlockedBehaviourDoesNotHoldUpThePollingOf1000Robots() throws Exception {
         BlockedBehaviour blocked = new BlockedBehaviour();
         EdgeTestSupport edge = null;
