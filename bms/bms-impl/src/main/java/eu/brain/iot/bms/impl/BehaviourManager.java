@@ -133,8 +133,7 @@ final class BehaviourManager {
     /**
      * Ask the installer for candidates. A resolved answer is used at once (a miss answers LAST_RESORT to this very
      * event: consumers of last resort, else counted as unhandled); otherwise the events are held until the answer
-     * arrives on the BMS's thread. Runs on a publisher's
-     * thread or on the BMS's.
+     * arrives on the BMS's thread. Runs on a publisher's thread or on the BMS's.
      */
     private Disposition search(String eventType, Searching searching) {
         counters.searches.increment();
@@ -425,8 +424,8 @@ final class BehaviourManager {
         }
         String name = behaviour == null ? null : behaviour.split(" ", 2)[0];
         List<String> mine = name == null ? List.of() : doing.stream().filter(a -> a.contains(name)).toList();
-        List<String> told = mine.isEmpty() ? doing : mine;
-        return "no answer from the installer" + (told.isEmpty() ? "" : "; it is " + String.join("; ", told));
+        return "no answer from the installer"
+                + (doing.isEmpty() ? "" : "; it is " + String.join("; ", mine.isEmpty() ? doing : mine));
     }
 
     private void graceEnded(String eventType, Installed installed) {
