@@ -63,7 +63,7 @@ class DownloadLimitsIntegrationTest extends BisTestBase {
         awaitOffered(installer, DOOR_CLOSED);
         value(installer.install(byType(DOOR_CLOSED)));
         unconfigure();
-        for (String name : List.of(DOOR, TestRepository.EVENTS, TestRepository.EDGE_API,
+        for (String name : List.of(DOOR, TestRepository.EVENTS, TestRepository.WAREHOUSE, TestRepository.EDGE_API,
                 TestRepository.EDGE_MODEL_API)) {
             bundle(name).uninstall(); // as a node restart's cache wipe would
         }

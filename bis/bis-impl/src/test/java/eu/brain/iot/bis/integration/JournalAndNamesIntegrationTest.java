@@ -86,6 +86,7 @@ class JournalAndNamesIntegrationTest extends BisTestBase {
         unconfigure();
         bundle(DOOR).uninstall();
         bundle(EVENTS).uninstall();
+        bundle(TestRepository.WAREHOUSE).uninstall();
         var settings = settings(); // the index is signed with a key that is no longer trusted: it is refused
         settings.put("trusted.keys", new String[] { repo.publicKey(IndexSigning.generateKeyPair(), "other")
                 .toString() });

@@ -34,6 +34,7 @@ class JournalIntegrationTest extends BisTestBase {
         unconfigure();
         bundle(DOOR).uninstall();
         bundle(EVENTS).uninstall();
+        bundle(TestRepository.WAREHOUSE).uninstall();
         assertThat(bundle(DOOR)).isNull();
 
         // the service appears only once the journal is restored: no waiting for the behaviour after it
@@ -49,6 +50,7 @@ class JournalIntegrationTest extends BisTestBase {
         unconfigure();
         bundle(DOOR).uninstall();
         bundle(EVENTS).uninstall();
+        bundle(TestRepository.WAREHOUSE).uninstall();
         BundleInstaller again = configure(settings());
         assertThat(again.installed()).singleElement().extracting(b -> b.reason)
                 .isEqualTo("journal: test: event had no consumer");
@@ -63,6 +65,7 @@ class JournalIntegrationTest extends BisTestBase {
         unconfigure();
         bundle(DOOR).uninstall();
         bundle(EVENTS).uninstall();
+        bundle(TestRepository.WAREHOUSE).uninstall();
         byte[] original = Files.readAllBytes(repo.jar("behaviour-door"));
         Files.write(repo.jar("behaviour-door"), new byte[] { 0 }, StandardOpenOption.APPEND); // tampered meanwhile
 
