@@ -64,8 +64,9 @@ class BehavioursOnDemandNodeTest {
 
         try (NodeProcess node = start()) {
             String ready = node.awaitOutput(READY);
-            // the door bundle and the events bundle it needs were installed and started before the ready line
-            assertThat(installedCount(ready)).isEqualTo(before + 2);
+            // the door bundle and the two it needs (the event types, the warehouse helpers) were installed and
+            // started before the ready line
+            assertThat(installedCount(ready)).isEqualTo(before + 3);
             node.awaitOutput("g! ");
             node.type("bus:behaviours");
             assertThat(node.awaitOutput("QUEUED")).contains("eu.brain.iot.behaviours.door");

@@ -68,8 +68,8 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
         FleetSettings settings = checked(config);
         String node = nodeName(context.getProperty(EdgeNode.PROPERTY));
         this.edge = new Edge(settings, node, bus::tryDeliver, EdgeLog.of(log));
-        log.info("edge of node " + node + " polling the fleet at " + settings.baseUrl() + " every "
-                + settings.periodMillis() + " ms, its share: " + settings.share());
+        log.info("edge polling the fleet at " + settings.baseUrl() + " every " + settings.periodMillis()
+                + " ms for node " + node + ", its share: " + settings.share());
     }
 
     @Modified
