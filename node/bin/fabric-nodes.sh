@@ -189,6 +189,11 @@ if [[ -z $broker_uri ]]; then
       exit 1
     }
   fi
+  if (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
+    echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
+      "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
+    exit 1
+  fi
   broker_log="$state_dir/broker.log"
   java -jar "$broker_jar" --port "$broker_port" --data "$state_dir/broker" >"$broker_log" 2>&1 </dev/null &
   broker_pid=$!

@@ -111,9 +111,6 @@ class FabricComponentIntegrationTest {
     }
 
     @Test
-    @Disabled("Inside Felix the component's Paho client never completes its connection (brain-iot-fabric-in waits in "
-            + "MqttToken.waitForCompletion, no Paho thread for the node starts), while the same code joins Mosquitto "
-            + "and HiveMQ outside OSGi (FabricTest) and the test bundle's own Paho client connects: not solved yet")
     void aConfiguredNodeJoinsRoutesByInterestAndAcknowledges() throws Exception {
         Assumptions.assumeTrue(Files.isExecutable(MOSQUITTO),
                 "Mosquitto is not installed (" + MOSQUITTO + " missing: apt-get install mosquitto): skipped");
