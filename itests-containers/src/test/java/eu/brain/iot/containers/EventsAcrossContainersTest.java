@@ -8,7 +8,6 @@ import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.regex.Pattern;
 import org.junit.jupiter.api.AfterAll;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer;
 import org.junit.jupiter.api.Order;
@@ -38,8 +37,6 @@ class EventsAcrossContainersTest {
     static void start() throws Exception {
         DockerEngine.assumeAvailable();
         TestSettings settings = TestSettings.fromSystemProperties();
-        String missing = FederatedProbes.missingFederation(settings.root());
-        Assumptions.assumeTrue(missing == null, () -> "cross-node container tests skipped: " + missing);
         FederatedProbes probes = new FederatedProbes();
         fabric = new FabricContainers(settings);
         broker = fabric.broker();

@@ -12,7 +12,6 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.regex.Matcher;
 import java.util.regex.Pattern;
-import java.util.zip.ZipFile;
 import org.testcontainers.images.builder.Transferable;
 
 /**
@@ -44,18 +43,6 @@ final class FederatedProbes {
         if (!Files.isRegularFile(probeBundle)) {
             throw new IllegalStateException("the probe bundle " + probeBundle + " does not exist: build it "
                     + "(mvn -pl itests-containers -am verify builds it first)");
-        }
-    }
-
-    /** Null when the node's jar runs the federation bundle, else why these tests cannot run. */
-    static String missingFederation(Path root) {
-        Path jar = root.resolve("node/target/fabric-node.jar");
-        try (ZipFile zip = new ZipFile(jar.toFile())) {
-            boolean found = zip.stream().anyMatch(e -> e.getName().matches("jar/federation[^/]*\\.jar"));
-            return found ? null : jar + " holds no federation bundle (jar/federation-*.jar): the node does not join "
-                    + "a fabric, so there is nothing to test across containers";
-        } catch (IOException e) {
-            return "cannot read " + jar + ": " + e.getMessage();
         }
     }
 
