@@ -8,6 +8,8 @@ import java.util.ArrayList;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Locale;
+import java.util.Map;
+import java.util.concurrent.ConcurrentHashMap;
 
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Filter;
@@ -58,6 +60,8 @@ public final class FabricComponent implements Host {
     private final FabricNode node;
     private final String problem;
     private final ServiceTracker<Object, InterestEntry> behaviours;
+    /** The interest of each tracked behaviour; written by the framework's service events (the tracker). */
+    private final Map<ServiceReference<Object>, InterestEntry> interest = new ConcurrentHashMap<>();
 
     @Activate
     public FabricComponent(BundleContext context, FabricConfig config, @Reference RemoteEvents remoteEvents,
@@ -83,17 +87,20 @@ public final class FabricComponent implements Host {
             @Override
             public InterestEntry addingService(ServiceReference<Object> ref) {
                 InterestEntry e = entry(ref);
+                interest.put(ref, e);
                 announce();
                 return e;
             }
 
             @Override
             public void modifiedService(ServiceReference<Object> ref, InterestEntry old) {
+                interest.put(ref, entry(ref));
                 announce();
             }
 
             @Override
             public void removedService(ServiceReference<Object> ref, InterestEntry old) {
+                interest.remove(ref);
                 announce();
             }
         };
@@ -150,21 +157,21 @@ public final class FabricComponent implements Host {
             c.forEach(o -> types.add(String.valueOf(o)));
         }
         Object filter = ref.getProperty(SmartBehaviourNamespace.FILTER_PROPERTY);
-        return new InterestEntry(types, filter instanceof String f ? f : null);
+        return new InterestEntry(types, filter instanceof String f && !f.isBlank() ? f : null); // empty: no filter
     }
 
-    private void announce() {
+    /**
+     * Announce the interest of every tracked behaviour. It reads {@link #interest}, not the tracker's own set: inside
+     * {@code addingService} the tracker does not hold the service being added yet.
+     */
+    private synchronized void announce() { // one at a time: the last list computed is the last announced
         if (node == null) {
             return;
         }
-        ServiceReference<Object>[] refs = behaviours.getServiceReferences();
         List<InterestEntry> entries = new ArrayList<>();
-        if (refs != null) {
-            for (ServiceReference<Object> ref : refs) {
-                InterestEntry e = entry(ref);
-                if (!e.types().isEmpty()) {
-                    entries.add(e);
-                }
+        for (InterestEntry e : interest.values()) {
+            if (!e.types().isEmpty()) {
+                entries.add(e);
             }
         }
         node.localInterest(entries);

@@ -35,7 +35,6 @@ import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
 import org.eclipse.paho.mqttv5.common.packet.UserProperty;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
-import org.junit.jupiter.api.Disabled;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.ServiceReference;
@@ -184,6 +183,29 @@ class FabricComponentIntegrationTest {
                 && m.contains("\"through\":1")));
         assertThat(command("nodes")).contains("peer").contains("online");
         assertThat(command("stats")).contains("peer");
+
+        // a behaviour that comes after the node joined (e.g. a bundle started later) is announced at once, with an
+        // empty filter meaning none
+        Dictionary<String, Object> lateProps = new Hashtable<>();
+        lateProps.put(SmartBehaviourNamespace.CONSUMED_PROPERTY, new String[] { "it.Late" });
+        lateProps.put(SmartBehaviourNamespace.FILTER_PROPERTY, "");
+        ServiceRegistration<UntypedSmartBehaviour> late = context.registerService(UntypedSmartBehaviour.class,
+                (UntypedSmartBehaviour) (type, fields) -> { }, lateProps);
+        try {
+            await().atMost(DEADLINE).until(() -> {
+                JsonNode entries = json.readTree(retained.get(interestTopic)).path("entries");
+                for (JsonNode e : entries) {
+                    if (e.path("types").toString().contains("it.Late")) {
+                        return e.path("filter").isNull();
+                    }
+                }
+                return false;
+            });
+        } finally {
+            late.unregister();
+        }
+        await().atMost(DEADLINE).until(() -> !new String(retained.get(interestTopic), StandardCharsets.UTF_8)
+                .contains("it.Late"));
 
         // without its configuration the node leaves: offline, no forwarder left
         config.delete();
