@@ -27,8 +27,8 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * Threads and what they own:
  * <ul>
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
- * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the {@link Inbox}es, acknowledgements, connection events, the resend
- * check; Paho's threads only queue work here;</li>
+ * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
+ * {@link Inbox}es, acknowledgements, connection events, the resend check; Paho's threads only queue work here;</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): takes batches from the {@link Outbox}es and
  * publishes them;</li>
  * <li>the bus's delivery workers call the forwarders, which append to the outboxes (see there).</li>

@@ -43,8 +43,8 @@ final class InstallJobs {
      * @param node the fabric node the installer chose for it ({@code BehaviourCandidate.node}), {@code null} for
      *        this node
      */
-    InstallJob start(String symbolicName, String version, String node, List<String> consumedTypes, String kind, String reason,
-            boolean revival, BiConsumer<InstallJob, Promise<InstalledBehaviour>> answered) {
+    InstallJob start(String symbolicName, String version, String node, List<String> consumedTypes, String kind,
+            String reason, boolean revival, BiConsumer<InstallJob, Promise<InstalledBehaviour>> answered) {
         InstallJob job = new InstallJob(next++, symbolicName, symbolicName + " " + version, kind, reason,
                 new ArrayList<>(), revival);
         bySymbolicName.put(symbolicName, job);
