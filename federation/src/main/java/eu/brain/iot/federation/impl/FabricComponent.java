@@ -12,6 +12,7 @@ import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
 import org.osgi.framework.Filter;
 import org.osgi.framework.FrameworkUtil;
 import org.osgi.framework.InvalidSyntaxException;
@@ -22,11 +23,15 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
 import org.osgi.service.metatype.annotations.Designate;
 import org.osgi.util.tracker.ServiceTracker;
 
+import eu.brain.iot.bis.api.BundleInstaller;
 import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
@@ -38,7 +43,8 @@ import eu.brain.iot.eventing.spi.RemoteEvents;
  * {@value FabricConfig#PID}); without it the node runs alone. It follows the node's smart behaviours (their consumed
  * types and filters, the whole whiteboard but the consumers of last resort) as its interest, registers the forwarders
  * the fabric asks for as {@link EventForwarder} services, and gives events from other nodes to the bus's
- * {@link RemoteEvents}.
+ * {@link RemoteEvents}. While the node has its own {@link BundleInstaller}, it registers the fabric's one
+ * ({@link FabricInstaller}, ranked higher), through which the node's BMS asks the fabric which node installs.
  * <p>
  * A node without a usable key or state folder does not join: the component stays active with no fabric node and says
  * why (log, {@code fabric:nodes}). Threads: SCR's (activation), the framework's service events (the tracker, which
@@ -53,6 +59,10 @@ public final class FabricComponent implements Host {
     public static final String NODE_NAME_PROPERTY = "fabric.node.name";
     /** Framework property naming the node's fabric state folder when the configuration does not. */
     public static final String STATE_DIR_PROPERTY = "fabric.node.state.dir";
+    /** Service property of the fabric's installer (the node's name), and what the node's own installer lacks. */
+    public static final String FABRIC_INSTALLER_PROPERTY = "eu.brain.iot.fabric.installer";
+    /** The fabric's installer ranks above the node's own (ranked 0 by default), so that the BMS takes it. */
+    public static final int FABRIC_INSTALLER_RANKING = 100;
 
     private final BundleContext context;
     private final RemoteEvents remoteEvents;
@@ -62,6 +72,8 @@ public final class FabricComponent implements Host {
     private final ServiceTracker<Object, InterestEntry> behaviours;
     /** The interest of each tracked behaviour; written by the framework's service events (the tracker). */
     private final Map<ServiceReference<Object>, InterestEntry> interest = new ConcurrentHashMap<>();
+    /** The fabric's installer while registered (guarded by this component's monitor). */
+    private ServiceRegistration<BundleInstaller> installerRegistration;
 
     @Activate
     public FabricComponent(BundleContext context, FabricConfig config, @Reference RemoteEvents remoteEvents,
@@ -133,7 +145,8 @@ public final class FabricComponent implements Host {
         return new Settings(config.broker_uri(), config.fabric_name(), name, config.username(), config._password(),
                 config.tls(), config.trust_store(), config._trust_store_password(), Path.of(config.key_file()),
                 stateDir, config.keep_alive_s(), config.session_expiry_s(), config.resend_timeout_ms(),
-                config.max_pending(), config.max_age_ms(), config.batch_max_events());
+                config.max_pending(), config.max_age_ms(), config.batch_max_events(), config.install_bid_ms(),
+                config.install_timeout_ms());
     }
 
     private static String hostName() {
@@ -164,21 +177,70 @@ public final class FabricComponent implements Host {
      * Announce the interest of every tracked behaviour. It reads {@link #interest}, not the tracker's own set: inside
      * {@code addingService} the tracker does not hold the service being added yet.
      */
-    private synchronized void announce() { // one at a time: the last list computed is the last announced
+    private void announce() {
         if (node == null) {
             return;
         }
-        List<InterestEntry> entries = new ArrayList<>();
-        for (InterestEntry e : interest.values()) {
-            if (!e.types().isEmpty()) {
-                entries.add(e);
+        synchronized (interest) { // one at a time: the last list computed is the last announced
+            List<InterestEntry> entries = new ArrayList<>();
+            for (InterestEntry e : interest.values()) {
+                if (!e.types().isEmpty()) {
+                    entries.add(e);
+                }
+            }
+            node.localInterest(entries);
+        }
+    }
+
+    /**
+     * The node's own installer (any but the fabric's): while there is one and this node is a member of a fabric,
+     * the fabric's installer is registered, ranked above it, so that the BMS asks the fabric which node installs.
+     */
+    @Reference(service = BundleInstaller.class, cardinality = ReferenceCardinality.OPTIONAL,
+            policy = ReferencePolicy.DYNAMIC, policyOption = ReferencePolicyOption.GREEDY,
+            target = "(!(" + FABRIC_INSTALLER_PROPERTY + "=*))", unbind = "removeLocalInstaller")
+    void setLocalInstaller(BundleInstaller local) {
+        if (node == null) {
+            return;
+        }
+        node.localInstaller(local);
+        synchronized (this) {
+            if (installerRegistration == null) {
+                Hashtable<String, Object> props = new Hashtable<>();
+                props.put(FABRIC_INSTALLER_PROPERTY, node.name());
+                props.put(Constants.SERVICE_RANKING, FABRIC_INSTALLER_RANKING);
+                installerRegistration = context.registerService(BundleInstaller.class, node.installer(), props);
             }
         }
-        node.localInterest(entries);
+    }
+
+    void removeLocalInstaller(BundleInstaller local) {
+        if (node == null) {
+            return;
+        }
+        synchronized (this) {
+            if (node.installer() instanceof FabricInstaller f && f.local() != local) {
+                return; // a greedy replacement was bound first
+            }
+            node.localInstaller(null);
+            unregisterInstaller();
+        }
+    }
+
+    private synchronized void unregisterInstaller() {
+        if (installerRegistration != null) {
+            try {
+                installerRegistration.unregister();
+            } catch (IllegalStateException gone) {
+                // unregistered with the bundle already
+            }
+            installerRegistration = null;
+        }
     }
 
     @Deactivate
     void deactivate() {
+        unregisterInstaller();
         if (node != null) {
             behaviours.close();
             node.close();

@@ -67,4 +67,12 @@ public @interface FabricConfig {
 
     @AttributeDefinition(description = "Most events in one MQTT message")
     int batch_max_events() default 256;
+
+    @AttributeDefinition(description = "How long the BMS's question 'which node installs a behaviour for this event?'"
+            + " waits for the other online nodes' answers, ms; the choice is made at the first of all answers or this")
+    long install_bid_ms() default 100;
+
+    @AttributeDefinition(description = "How long an install on another node may take until its behaviour's interest"
+            + " arrives, ms; then the BMS is told it failed, naming the node")
+    long install_timeout_ms() default 120_000;
 }

@@ -27,8 +27,8 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * Threads and what they own:
  * <ul>
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
- * {@link RemoteNode}s and their forwarders, the {@link Inbox}es, acknowledgements, connection events, the resend
- * check; Paho's threads only queue work here;</li>
+ * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
+ * {@link Inbox}es, acknowledgements, connection events, the resend check; Paho's threads only queue work here;</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): takes batches from the {@link Outbox}es and
  * publishes them;</li>
  * <li>the bus's delivery workers call the forwarders, which append to the outboxes (see there).</li>
@@ -51,6 +51,7 @@ public final class FabricNode implements AutoCloseable {
     private final MqttLink link;
     private final ScheduledExecutorService in;
     private final Sender sender;
+    private final FabricInstaller installer;
 
     private final Map<String, RemoteNode> nodes = new ConcurrentHashMap<>();
     private final Membership membership;
@@ -105,6 +106,17 @@ public final class FabricNode implements AutoCloseable {
         this.membership = new Membership(settings.fabric(), host, this::node, this::outbox,
                 destination -> (type, names, data) -> forward(destination, type, names, data));
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
+        this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
+            @Override
+            public void send(String to, Wire.Install message) throws IOException, InterruptedException {
+                link.publish(topics.install(to, self), wire.install(message), false);
+            }
+
+            @Override
+            public boolean joined() {
+                return FabricNode.this.joined();
+            }
+        }, nodes::values, this::node, host);
     }
 
     /** Start: connect (retrying until the broker answers), then send. Never waits for the broker. */
@@ -234,6 +246,7 @@ public final class FabricNode implements AutoCloseable {
         }
         if (payload.length == 0 && !own) {
             membership.interestCleared(claimed); // a retained message removed
+            installer.membershipChanged(claimed);
             return;
         }
         NodeStats stats = node(claimed).stats;
@@ -249,11 +262,16 @@ public final class FabricNode implements AutoCloseable {
             switch (t.kind()) {
             case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats);
             case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats);
-            case Topics.INTEREST -> membership.onInterest(claimed, wire.readInterest(payload), stats);
+            case Topics.INTEREST -> {
+                membership.onInterest(claimed, wire.readInterest(payload), stats);
+                installer.membershipChanged(claimed); // after the forwarders: an install waiting for them ends
+            }
             case Topics.STATUS -> {
                 membership.onStatus(claimed, wire.readStatus(payload), stats);
+                installer.membershipChanged(claimed);
                 sender.wake(); // a node back online: what was kept for it goes now
             }
+            case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats);
             default -> stats.malformed.increment();
             }
         } catch (MalformedException e) {
@@ -339,6 +357,14 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
+    private void onInstall(String from, Wire.Install message, NodeStats stats) {
+        if (!message.from().equals(from) || !message.to().equals(settings.node())) {
+            stats.malformed.increment();
+        } else if (fresh(message.sent(), stats)) {
+            installer.received(message);
+        }
+    }
+
     private void onAck(String from, Wire.Ack ack, NodeStats stats) throws IOException {
         if (!ack.from().equals(from) || !ack.to().equals(settings.node())) {
             stats.malformed.increment();
@@ -368,6 +394,19 @@ public final class FabricNode implements AutoCloseable {
     }
 
     // ---- views ------------------------------------------------------------------------------------------------
+
+    /**
+     * @return the fabric's installer: it asks the online nodes which one installs a behaviour, and has it installed
+     *         there (see {@link FabricInstaller})
+     */
+    public eu.brain.iot.bis.api.BundleInstaller installer() {
+        return installer;
+    }
+
+    /** This node's own installer, which the fabric's wraps and answers other nodes from; {@code null} for none. */
+    public void localInstaller(eu.brain.iot.bis.api.BundleInstaller local) {
+        installer.local(local);
+    }
 
     /** @return whether the node is connected to the broker and announced */
     public boolean joined() {
@@ -401,6 +440,7 @@ public final class FabricNode implements AutoCloseable {
         closed = true;
         try {
             in.submit(() -> {
+                installer.close();
                 membership.leaveAll(nodes.values());
                 if (link.isConnected()) {
                     try {

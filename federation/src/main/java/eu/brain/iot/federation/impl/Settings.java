@@ -22,10 +22,13 @@ import java.util.regex.Pattern;
  * @param maxPending events kept per remote node
  * @param maxAgeMillis oldest signature accepted
  * @param batchMaxEvents most events per MQTT message
+ * @param bidMillis how long a node asking the fabric which node installs a behaviour waits for the answers
+ * @param installTimeoutMillis how long an install order to another node may take, its interest included
  */
 public record Settings(String brokerUri, String fabric, String node, String username, String password, boolean tls,
         String trustStore, String trustStorePassword, Path keyFile, Path stateDir, int keepAliveSeconds,
-        long sessionExpirySeconds, long resendTimeoutMillis, int maxPending, long maxAgeMillis, int batchMaxEvents) {
+        long sessionExpirySeconds, long resendTimeoutMillis, int maxPending, long maxAgeMillis, int batchMaxEvents,
+        long bidMillis, long installTimeoutMillis) {
 
     /** Names usable as one MQTT topic level and one file name. */
     static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
@@ -40,6 +43,8 @@ public record Settings(String brokerUri, String fabric, String node, String user
         check(batchMaxEvents >= 1, "batch.max.events", batchMaxEvents, "at least 1");
         check(resendTimeoutMillis >= 100, "resend.timeout.ms", resendTimeoutMillis, "at least 100");
         check(maxAgeMillis >= 1000, "max.age.ms", maxAgeMillis, "at least 1000");
+        check(bidMillis >= 1, "install.bid.ms", bidMillis, "at least 1");
+        check(installTimeoutMillis >= 1000, "install.timeout.ms", installTimeoutMillis, "at least 1000");
     }
 
     private static void check(boolean ok, String key, Object value, String expected) {
@@ -52,19 +57,27 @@ public record Settings(String brokerUri, String fabric, String node, String user
     /** Settings for a node with defaults for everything but its identity and folders (tests, tools). */
     public static Settings of(String brokerUri, String fabric, String node, Path keyFile, Path stateDir) {
         return new Settings(brokerUri, fabric, node, "", "", false, "", "", keyFile, stateDir, 10, 3600, 5000,
-                100_000, 300_000, 256);
+                100_000, 300_000, 256, 100, 120_000);
     }
 
     /** The same settings with another resend timeout. */
     public Settings withResendTimeout(long millis) {
         return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
-                stateDir, keepAliveSeconds, sessionExpirySeconds, millis, maxPending, maxAgeMillis, batchMaxEvents);
+                stateDir, keepAliveSeconds, sessionExpirySeconds, millis, maxPending, maxAgeMillis, batchMaxEvents,
+                bidMillis, installTimeoutMillis);
     }
 
     /** The same settings with another keep-alive. */
     public Settings withKeepAlive(int seconds) {
         return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
                 stateDir, seconds, sessionExpirySeconds, resendTimeoutMillis, maxPending, maxAgeMillis,
-                batchMaxEvents);
+                batchMaxEvents, bidMillis, installTimeoutMillis);
+    }
+
+    /** The same settings with another bid deadline and install timeout. */
+    public Settings withInstall(long bid, long timeout) {
+        return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
+                stateDir, keepAliveSeconds, sessionExpirySeconds, resendTimeoutMillis, maxPending, maxAgeMillis,
+                batchMaxEvents, bid, timeout);
     }
 }

@@ -3,7 +3,8 @@ package eu.brain.iot.federation.impl;
 /**
  * The fabric's topic tree, under {@code brainiot/<fabric>/nodes/<node>/}: {@code interest} and {@code status}
  * (retained), {@code events/<from>} (batches of events for the node, from a publisher) and {@code acks/<from>}
- * (acknowledgements for the node, from a receiver).
+ * (acknowledgements for the node, from a receiver), {@code install/<from>} (which node installs a behaviour: bids,
+ * offers, orders, results, for the node from another).
  */
 final class Topics {
 
@@ -12,6 +13,7 @@ final class Topics {
     static final String STATUS = "status";
     static final String EVENTS = "events";
     static final String ACKS = "acks";
+    static final String INSTALL = "install";
 
     private final String base;
 
@@ -35,9 +37,15 @@ final class Topics {
         return base + to + "/" + ACKS + "/" + from;
     }
 
+    /** Questions and answers about installing behaviours, for {@code to} from {@code from} (see FabricInstaller). */
+    String install(String to, String from) {
+        return base + to + "/" + INSTALL + "/" + from;
+    }
+
     /** The subscriptions of a node. */
     String[] subscriptions(String self) {
         return new String[] { base + self + "/" + EVENTS + "/+", base + self + "/" + ACKS + "/+",
+                base + self + "/" + INSTALL + "/+",
                 base + "+/" + INTEREST, base + "+/" + STATUS };
     }
 

@@ -11,11 +11,16 @@ import java.util.List;
 import java.util.Map;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
+import com.fasterxml.jackson.databind.DeserializationFeature;
 import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.module.SimpleModule;
 import com.fasterxml.jackson.databind.ser.std.ToStringSerializer;
+
+import eu.brain.iot.bis.api.BehaviourCandidate;
+import eu.brain.iot.bis.api.InstallRequest;
+import eu.brain.iot.bis.api.InstalledBehaviour;
 
 /**
  * The fabric's wire format, JSON through Jackson. Events travel in the form untyped behaviours get them (a map of
@@ -33,7 +38,8 @@ final class Wire {
     };
 
     private final ObjectMapper mapper = new ObjectMapper().registerModule(new SimpleModule("fabric-wire")
-            .addSerializer(TemporalAccessor.class, ToStringSerializer.instance));
+            .addSerializer(TemporalAccessor.class, ToStringSerializer.instance))
+            .configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false); // newer nodes may say more
 
     /** One event as its publisher keeps it (journal) and sends it: {"seq","type","types","data"}. */
     byte[] event(long seq, String type, List<String> types, Map<String, Object> data) {
@@ -137,6 +143,46 @@ final class Wire {
     Status readStatus(byte[] payload) throws MalformedException {
         JsonNode root = tree(payload);
         return new Status(text(root, "node"), text(root, "state"), number(root, "sent"));
+    }
+
+    /**
+     * A message about installing a behaviour, for node {@code to} from node {@code from} (see {@link FabricInstaller}):
+     * {@code op} is {@link #BID} (which candidates do you offer for {@code types}, and what is your load?),
+     * {@link #OFFER} (the answer: {@code candidates}, {@code load}), {@link #ORDER} (install {@code request}) or
+     * {@link #RESULT} ({@code ok} and {@code installed}, or {@code problem} and {@code message}). {@code id} pairs an
+     * answer with its question.
+     */
+    record Install(String op, String from, String to, long sent, String id, List<String> types,
+            List<BehaviourCandidate> candidates, int load, InstallRequest request, boolean ok, String problem,
+            String message, InstalledBehaviour installed) {
+        static final String BID = "bid";
+        static final String OFFER = "offer";
+        static final String ORDER = "order";
+        static final String RESULT = "result";
+    }
+
+    byte[] install(Install message) {
+        return write(message);
+    }
+
+    Install readInstall(byte[] payload) throws MalformedException {
+        JsonNode root = tree(payload);
+        String op = text(root, "op");
+        text(root, "from");
+        text(root, "to");
+        text(root, "id");
+        number(root, "sent");
+        if (!List.of(Install.BID, Install.OFFER, Install.ORDER, Install.RESULT).contains(op)) {
+            throw new MalformedException("unknown install message '" + op + "'");
+        }
+        if (Install.ORDER.equals(op) && !root.path("request").isObject()) {
+            throw new MalformedException("an install order needs a 'request'");
+        }
+        try {
+            return mapper.treeToValue(root, Install.class);
+        } catch (JsonProcessingException | IllegalArgumentException e) {
+            throw new MalformedException("not an install message: " + e.getMessage());
+        }
     }
 
     private JsonNode tree(byte[] payload) throws MalformedException {

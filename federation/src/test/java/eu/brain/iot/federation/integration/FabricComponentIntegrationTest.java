@@ -37,6 +37,7 @@ import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
 import org.osgi.framework.ServiceReference;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.cm.Configuration;
@@ -46,9 +47,16 @@ import org.osgi.service.log.LogReaderService;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
 
+import org.osgi.util.promise.Promise;
+import org.osgi.util.promise.Promises;
+
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 
+import eu.brain.iot.bis.api.BehaviourCandidate;
+import eu.brain.iot.bis.api.BundleInstaller;
+import eu.brain.iot.bis.api.InstallRequest;
+import eu.brain.iot.bis.api.InstalledBehaviour;
 import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
@@ -81,6 +89,7 @@ class FabricComponentIntegrationTest {
     MqttAsyncClient peer;
     Configuration config;
     ServiceRegistration<?> behaviourReg;
+    ServiceRegistration<?> installerReg;
     final Map<String, byte[]> retained = new ConcurrentHashMap<>();
     final List<String> received = new CopyOnWriteArrayList<>();
     final Map<String, String> signatures = new ConcurrentHashMap<>();
@@ -92,6 +101,9 @@ class FabricComponentIntegrationTest {
         }
         if (behaviourReg != null) {
             behaviourReg.unregister();
+        }
+        if (installerReg != null) {
+            installerReg.unregister();
         }
         if (peer != null) {
             peer.disconnectForcibly(0, 1, false);
@@ -207,6 +219,28 @@ class FabricComponentIntegrationTest {
         await().atMost(DEADLINE).until(() -> !new String(retained.get(interestTopic), StandardCharsets.UTF_8)
                 .contains("it.Late"));
 
+        // the node's own installer: the fabric's is registered above it (the BMS takes the best-ranked one), and
+        // answers the peer's signed bid from it
+        installerReg = context.registerService(BundleInstaller.class, new OwnInstaller(), null);
+        await().atMost(DEADLINE).until(() -> fabricInstaller() != null);
+        assertThat(fabricInstaller().getProperty(Constants.SERVICE_RANKING)).isEqualTo(100);
+        assertThat(context.getServiceReference(BundleInstaller.class)).as("the best-ranked installer")
+                .isEqualTo(fabricInstaller());
+        publish(key, BASE + "it-node/install/peer", "{\"op\":\"bid\",\"from\":\"peer\",\"to\":\"it-node\","
+                + "\"sent\":" + System.currentTimeMillis() + ",\"id\":\"q1\",\"types\":[\"it.Nobody\"]}", false);
+        String offers = BASE + "peer/install/it-node";
+        await().atMost(DEADLINE).until(() -> received.stream().anyMatch(m -> m.startsWith(offers)));
+        String offerText = received.stream().filter(m -> m.startsWith(offers)).findFirst().orElseThrow()
+                .substring(offers.length() + 1);
+        JsonNode offer = json.readTree(offerText);
+        assertThat(offer.path("op").asText()).isEqualTo("offer");
+        assertThat(offer.path("id").asText()).isEqualTo("q1");
+        assertThat(offer.path("candidates").get(0).path("symbolicName").asText()).isEqualTo("it.behaviour");
+        assertThat(signatures.get(offers)).isEqualTo(sign(key, offers, offerText.getBytes(StandardCharsets.UTF_8)));
+        installerReg.unregister();
+        installerReg = null;
+        await().atMost(DEADLINE).until(() -> fabricInstaller() == null);
+
         // without its configuration the node leaves: offline, no forwarder left
         config.delete();
         config = null;
@@ -244,6 +278,43 @@ class FabricComponentIntegrationTest {
             }
         }
         return out.toString();
+    }
+
+    private ServiceReference<?> fabricInstaller() throws Exception {
+        ServiceReference<?>[] refs = context.getServiceReferences(BundleInstaller.class.getName(),
+                "(eu.brain.iot.fabric.installer=it-node)");
+        return refs == null ? null : refs[0];
+    }
+
+    /** The node's own installer, as far as the fabric asks it: one behaviour for {@code it.Nobody}. */
+    static final class OwnInstaller implements BundleInstaller {
+        @Override
+        public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes) {
+            BehaviourCandidate c = new BehaviourCandidate();
+            c.symbolicName = "it.behaviour";
+            c.version = "1.0.0";
+            c.consumed = List.of("it.Nobody");
+            return Promises.resolved(consumedTypes.contains("it.Nobody") ? List.of(c) : List.of());
+        }
+
+        @Override
+        public Promise<InstalledBehaviour> install(InstallRequest request) {
+            return Promises.failed(new UnsupportedOperationException("not asked in this test"));
+        }
+
+        @Override
+        public Promise<InstalledBehaviour> uninstall(String symbolicName, String reason, boolean byOperator) {
+            return Promises.failed(new UnsupportedOperationException("not asked in this test"));
+        }
+
+        @Override
+        public void allow(String symbolicName) {
+        }
+
+        @Override
+        public List<InstalledBehaviour> installed() {
+            return List.of();
+        }
     }
 
     private ServiceReference<?> forwarderTo(String node) throws Exception {

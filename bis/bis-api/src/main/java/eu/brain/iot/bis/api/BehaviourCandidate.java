@@ -17,4 +17,9 @@ public class BehaviourCandidate extends DTO {
     /** The SHA-256 the index gives for its bytes (hex). */
     public String sha256;
     public long size;
+    /**
+     * The fabric node whose installer offers it and would install it, as an installer that spans several nodes
+     * chose it; {@code null} from an installer of this node alone. Passed back in {@link InstallRequest#node}.
+     */
+    public String node;
 }

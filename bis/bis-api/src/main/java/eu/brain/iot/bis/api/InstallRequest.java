@@ -19,4 +19,9 @@ public class InstallRequest extends DTO {
     public String reason;
     /** {@code true} when a person asked for it (Gogo, REST): overrides and clears an operator's earlier removal. */
     public boolean operator;
+    /**
+     * The fabric node that installs it ({@link BehaviourCandidate#node} of the chosen candidate); {@code null} for
+     * this node. An installer of this node alone ignores it.
+     */
+    public String node;
 }

@@ -4,7 +4,7 @@
  * Service depends on this API only, so that a remote installer on another node can take the local one's place.
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package eu.brain.iot.bis.api;
 
 import org.osgi.annotation.bundle.Export;

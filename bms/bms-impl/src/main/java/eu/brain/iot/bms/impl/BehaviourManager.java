@@ -230,7 +230,7 @@ final class BehaviourManager {
                     + " bis:uninstall): installed again";
             default -> "";
             } + " (Behaviour Management Service)";
-            job = jobs.start(best.symbolicName, best.version, expected.searched(), kind, reason, false,
+            job = jobs.start(best.symbolicName, best.version, best.node, expected.searched(), kind, reason, false,
                     this::answered);
         }
         Installing installing = new Installing(expected.searched(), expected.since(), job.behaviour(), attempt,

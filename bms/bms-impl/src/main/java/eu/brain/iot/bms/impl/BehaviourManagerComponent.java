@@ -10,12 +10,16 @@ import java.util.concurrent.Executors;
 import java.util.function.BooleanSupplier;
 
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Modified;
 import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
 import org.osgi.service.metatype.annotations.Designate;
@@ -37,7 +41,8 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 
 /**
  * The Behaviour Management Service as a Declarative Services component: the bus's {@link UnhandledEventPolicy}
- * and the BMS's statistics. It needs a {@link BundleInstaller} (local, or one day remote), the bus and the bus's
+ * and the BMS's statistics. It needs a {@link BundleInstaller} (the best-ranked one: the node's own, or a fabric's
+ * that chooses which node installs; see {@link CurrentInstaller}), the bus and the bus's
  * {@link HeldEvents}. A new configuration applies in place ({@code @Modified}): the types being installed and the
  * held events are kept. It listens to the framework's bundle events ({@link BundleWatch}) to bring back a behaviour
  * whose bundle stopped or was uninstalled outside the installer. Threads: {@code brain-iot-bms} (the BMS's decisions
@@ -58,9 +63,12 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
     private final ManagerCountersImpl counters = new ManagerCountersImpl();
     private final Logger log;
 
+    /** The best-ranked installer, followed as installers come and go (see {@link #addInstaller}). */
+    private final CurrentInstaller installer = new CurrentInstaller();
+
     @Activate
-    public BehaviourManagerComponent(BundleContext context, BmsConfig config, @Reference BundleInstaller installer,
-            @Reference EventBus bus, @Reference HeldEvents held,
+    public BehaviourManagerComponent(BundleContext context, BmsConfig config, @Reference EventBus bus,
+            @Reference HeldEvents held,
             @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         Settings settings = Settings.from(config); // a bad value fails activation with the property's name
@@ -76,6 +84,25 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
         this.watch = new BundleWatch(context, scheduler, frameworkStopping, manager::wentAway);
         manager.start();
         watch.open();
+    }
+
+    /**
+     * Installers as they come and go: the node's own, and a fabric's while the node is a member of one (ranked
+     * higher: it asks the other nodes which one installs). Dynamic and greedy, so that the best-ranked one is used
+     * without restarting the BMS: a restart would drop the policy from the bus for a moment, and with it the types
+     * being installed.
+     */
+    @Reference(service = BundleInstaller.class, cardinality = ReferenceCardinality.AT_LEAST_ONE,
+            policy = ReferencePolicy.DYNAMIC, policyOption = ReferencePolicyOption.GREEDY,
+            unbind = "removeInstaller", updated = "addInstaller")
+    void addInstaller(BundleInstaller installer, Map<String, Object> properties) {
+        Object ranking = properties.get(Constants.SERVICE_RANKING);
+        this.installer.add(installer, ranking instanceof Integer r ? r : 0,
+                (Long) properties.get(Constants.SERVICE_ID));
+    }
+
+    void removeInstaller(BundleInstaller installer, Map<String, Object> properties) {
+        this.installer.remove((Long) properties.get(Constants.SERVICE_ID));
     }
 
     @Modified

@@ -39,9 +39,12 @@ final class InstallJobs {
     /**
      * Asks the installer for exactly this behaviour (an automatic request, never an operator's); its answer is
      * passed to {@code answered} on the BMS's thread, the job no longer in flight by then.
+     *
+     * @param node the fabric node the installer chose for it ({@code BehaviourCandidate.node}), {@code null} for
+     *        this node
      */
-    InstallJob start(String symbolicName, String version, List<String> consumedTypes, String kind, String reason,
-            boolean revival, BiConsumer<InstallJob, Promise<InstalledBehaviour>> answered) {
+    InstallJob start(String symbolicName, String version, String node, List<String> consumedTypes, String kind,
+            String reason, boolean revival, BiConsumer<InstallJob, Promise<InstalledBehaviour>> answered) {
         InstallJob job = new InstallJob(next++, symbolicName, symbolicName + " " + version, kind, reason,
                 new ArrayList<>(), revival);
         bySymbolicName.put(symbolicName, job);
@@ -51,6 +54,7 @@ final class InstallJobs {
         request.consumedTypes = consumedTypes;
         request.reason = reason;
         request.operator = false;
+        request.node = node;
         Promise<InstalledBehaviour> result;
         try {
             result = installer.install(request);

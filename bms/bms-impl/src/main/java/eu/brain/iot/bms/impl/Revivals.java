@@ -184,8 +184,8 @@ final class Revivals {
                         + " again without waiting for an event (Behaviour Management Service)"
                 : "its bundle was uninstalled outside the installer (not with bis:uninstall): installed again"
                         + " without waiting for an event (Behaviour Management Service)";
-        InstallJob job = jobs.start(symbolicName, target.version(), target.consumed(), target.kind(), reason, true,
-                answered);
+        InstallJob job = jobs.start(symbolicName, target.version(), null, target.consumed(), target.kind(), reason,
+                true, answered);
         revivals.put(symbolicName, new Asking(since, attempt, job.id(), target));
     }
 

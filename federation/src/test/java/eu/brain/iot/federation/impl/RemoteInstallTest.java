@@ -1,0 +1,224 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.concurrent.ExecutionException;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.LongStream;
+
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.api.Assumptions;
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+import org.osgi.util.promise.Deferred;
+import org.osgi.util.promise.Promise;
+
+import eu.brain.iot.bis.api.BehaviourCandidate;
+import eu.brain.iot.bis.api.InstallException;
+import eu.brain.iot.bis.api.InstalledBehaviour;
+import eu.brain.iot.federation.impl.Events.Moved;
+import eu.brain.iot.federation.impl.Events.Recorder;
+
+/**
+ * The BMS's choice of the node that installs a behaviour, through the fabric's installer ({@link FabricInstaller}):
+ * several nodes in one JVM (each the real bus core and a real {@link FabricNode}) joined by a real broker started by
+ * the test (Mosquitto, skipped where missing, and embedded HiveMQ CE); each node's own installer is a
+ * {@link FakeInstaller} whose install registers a behaviour with that node's bus; the BMS of the asking node is the
+ * part of it that uses the installer ({@link MiniBms}). Bids, offers, orders and results are the fabric's real,
+ * signed messages.
+ */
+class RemoteInstallTest {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String MOVED = Moved.class.getName();
+    static final String RECORDER = "eu.brain.iot.test.recorder";
+
+    @TempDir
+    Path tmp;
+    Broker broker;
+    Path key;
+    final List<TestNode> nodes = new ArrayList<>();
+
+    @AfterEach
+    void tearDown(org.junit.jupiter.api.TestInfo info) throws Exception {
+        StringBuilder report = new StringBuilder(info.getDisplayName()).append('\n');
+        for (TestNode n : nodes) {
+            n.log.forEach(l -> report.append(n.name).append(": ").append(l).append('\n'));
+        }
+        Files.createDirectories(Path.of("target"));
+        Files.writeString(Path.of("target", "remote-install-" + info.getTestMethod().get().getName() + ".log"),
+                report);
+        for (TestNode n : nodes) {
+            try {
+                n.close();
+            } catch (RuntimeException e) {
+                // crashed already
+            }
+        }
+        if (broker != null) {
+            broker.close();
+        }
+    }
+
+    void startBroker(Broker.Kind kind) throws Exception {
+        if (kind == Broker.Kind.MOSQUITTO) {
+            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
+                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
+        }
+        broker = Broker.of(kind, tmp.resolve("broker"));
+        key = tmp.resolve("fabric.key");
+        FabricKey.generate(key);
+    }
+
+    /** A started node whose own installer is {@code installer}. */
+    TestNode node(String name, FakeInstaller installer) throws Exception {
+        TestNode n = new TestNode(name, Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name))
+                .withResendTimeout(1000).withKeepAlive(2).withInstall(100, 30_000));
+        nodes.add(n);
+        n.start();
+        n.fabric.localInstaller(installer);
+        return n;
+    }
+
+    /** An installer that offers the recorder for {@code Moved} and, asked, registers it with {@code on}'s bus. */
+    static FakeInstaller offering(TestNode[] on, Recorder recorder) {
+        FakeInstaller f = new FakeInstaller();
+        f.offers = Map.of(MOVED, FakeInstaller.candidate(RECORDER, MOVED));
+        f.onInstall = r -> {
+            on[0].addBehaviour(recorder, null, MOVED);
+            return org.osgi.util.promise.Promises.resolved(FakeInstaller.installed(RECORDER));
+        };
+        return f;
+    }
+
+    static void awaitOnline(TestNode on, TestNode... others) {
+        for (TestNode other : others) {
+            await(other.name + " online for " + on.name).atMost(DEADLINE).until(() -> on.statusOf(other.name)
+                    .equals("online"));
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void heldEventsReachTheBehaviourInstalledOnTheNodeThatOffersIt(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        Recorder recorder = new Recorder();
+        TestNode[] bRef = new TestNode[1];
+        FakeInstaller atA = new FakeInstaller(); // a's repositories have nothing for it
+        FakeInstaller atB = offering(bRef, recorder);
+        FakeInstaller atC = new FakeInstaller();
+        TestNode a = node("a", atA);
+        bRef[0] = node("b", atB);
+        TestNode c = node("c", atC);
+        awaitOnline(a, bRef[0], c);
+        MiniBms bms = new MiniBms(a.fabric.installer(), MOVED);
+        a.bus.policy(bms);
+
+        int held = 300;
+        for (int i = 1; i <= held; i++) {
+            a.bus.deliver(new Moved("r1", i)); // nobody consumes it: held on a while the fabric chooses
+        }
+        assertThat(bms.found.get(30, TimeUnit.SECONDS)).extracting(cand -> cand.node).containsOnly("b");
+        InstalledBehaviour done = bms.outcome.get(30, TimeUnit.SECONDS);
+        assertThat(done.symbolicName).isEqualTo(RECORDER);
+        for (int i = held + 1; i <= held + 100; i++) {
+            a.bus.deliver(new Moved("r1", i)); // after the install: routed to b at once
+        }
+        await().atMost(DEADLINE).until(() -> recorder.got.size() >= held + 100);
+        await().during(Duration.ofMillis(300)).atMost(DEADLINE).until(() -> recorder.got.size() == held + 100);
+        assertThat(recorder.seqs()).as("every held event once, in publish order, then the newer ones")
+                .containsExactlyElementsOf(LongStream.rangeClosed(1, held + 100).boxed().toList());
+        assertThat(atB.installs).hasSize(1);
+        assertThat(atB.installs.get(0).node).as("the installing node's own installer gets a local request").isNull();
+        assertThat(atA.installs).isEmpty();
+        assertThat(atC.installs).isEmpty();
+        assertThat(a.bus.held()).isEmpty();
+        assertThat(a.log).anyMatch(l -> l.contains("node b installs " + RECORDER));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void theChosenNodeGoingOfflineMidInstallFailsTheInstallNamingIt(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        FakeInstaller atA = new FakeInstaller();
+        FakeInstaller atB = new FakeInstaller();
+        atB.offers = Map.of(MOVED, FakeInstaller.candidate(RECORDER, MOVED));
+        Deferred<InstalledBehaviour> never = new Deferred<>();
+        atB.onInstall = r -> never.getPromise(); // b starts installing and never finishes: it dies meanwhile
+        TestNode a = node("a", atA);
+        TestNode b = node("b", atB);
+        awaitOnline(a, b);
+        MiniBms bms = new MiniBms(a.fabric.installer(), MOVED);
+        a.bus.policy(bms);
+
+        a.bus.deliver(new Moved("r1", 1));
+        await("b got the install order").atMost(DEADLINE).until(() -> atB.installs.size() == 1);
+        b.crash(); // no goodbye: the broker publishes b's Last Will within 1.5 keep-alives
+
+        ExecutionException failed = org.junit.jupiter.api.Assertions.assertThrows(ExecutionException.class,
+                () -> bms.outcome.get(30, TimeUnit.SECONDS));
+        assertThat(failed.getCause()).isInstanceOf(InstallException.class)
+                .hasMessageContaining("node b went offline while installing " + RECORDER);
+        assertThat(((InstallException) failed.getCause()).problem()).isEqualTo(InstallException.Problem.START_FAILED);
+        assertThat(a.bus.held()).as("the events stay held: the BMS chooses again or gives up").isNotEmpty();
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void withNoAnswerByTheDeadlineTheLocalInstallerIsUsed(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        Recorder recorder = new Recorder();
+        TestNode[] aRef = new TestNode[1];
+        FakeInstaller atA = offering(aRef, recorder);
+        FakeInstaller atB = new FakeInstaller();
+        atB.findAnswer = new Deferred<List<BehaviourCandidate>>().getPromise(); // b never answers
+        aRef[0] = node("a", atA);
+        TestNode a = aRef[0];
+        TestNode b = node("b", atB);
+        awaitOnline(a, b);
+
+        long start = System.nanoTime();
+        Promise<List<BehaviourCandidate>> found = a.fabric.installer().find(List.of(MOVED));
+        List<BehaviourCandidate> candidates = found.getValue();
+        long took = TimeUnit.NANOSECONDS.toMillis(System.nanoTime() - start);
+        assertThat(candidates).extracting(cand -> cand.node).containsExactly("a");
+        assertThat(took).as("decided at the deadline (100 ms), not before b's answer could come").isBetween(90L,
+                5_000L);
+
+        MiniBms bms = new MiniBms(a.fabric.installer(), MOVED);
+        a.bus.policy(bms);
+        for (int i = 1; i <= 50; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        bms.outcome.get(30, TimeUnit.SECONDS);
+        await().atMost(DEADLINE).until(() -> recorder.got.size() == 50);
+        assertThat(recorder.seqs()).containsExactlyElementsOf(LongStream.rangeClosed(1, 50).boxed().toList());
+        assertThat(atA.installs).hasSize(1);
+        assertThat(atB.installs).isEmpty();
+    }
+
+    @Test
+    void aloneTheNodesOwnInstallerAnswersAsItIs() throws Exception {
+        startBroker(Broker.Kind.HIVEMQ);
+        FakeInstaller own = new FakeInstaller();
+        own.offers = Map.of(MOVED, FakeInstaller.candidate(RECORDER, MOVED));
+        TestNode a = node("a", own);
+        await().atMost(DEADLINE).until(() -> a.fabric.joined());
+        Promise<List<BehaviourCandidate>> found = a.fabric.installer().find(List.of(MOVED));
+        assertThat(found.isDone()).as("answered from memory, at once, as the node's own installer").isTrue();
+        assertThat(found.getValue()).extracting(cand -> cand.node).containsExactly((String) null);
+        InstalledBehaviour done = a.fabric.installer().install(new eu.brain.iot.bis.api.InstallRequest())
+                .getValue();
+        assertThat(done.symbolicName).isNull();
+        assertThat(own.installs).hasSize(1);
+    }
+}
