@@ -1,6 +1,7 @@
 package eu.brain.iot.federation.impl;
 
 import java.io.IOException;
+import java.lang.reflect.InvocationTargetException;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.HashMap;
@@ -44,6 +45,9 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
  * registered with the bus (which hands the events it held over in that step). It fails with an
  * {@link InstallException} naming the node and the reason when the result is a failure, the node is not online or
  * goes offline meanwhile, the order cannot be sent, or {@code install.timeout.ms} passes.</li>
+ * <li>When no node online offers a behaviour, a node that is offline and whose last interest took the types is the
+ * answer ({@link Departed}): its install waits for that node to come back with the interest, up to
+ * {@code install.timeout.ms}, while the BMS holds the events.</li>
  * <li>The rest ({@code installed}, {@code uninstall}, ...) is the local installer's.</li>
  * </ul>
  * Threads: the methods of {@link BundleInstaller} are called on any thread (the BMS's, publishers'); they read
@@ -95,6 +99,8 @@ final class FabricInstaller implements BundleInstaller {
         final InstallRequest request;
         final Deferred<InstalledBehaviour> answer;
         InstalledBehaviour installed;
+        /** Waiting for a departed node to come back ({@link Departed}), no order sent. */
+        boolean awaitingReturn;
         ScheduledFuture<?> timeout;
 
         Order(String id, String node, InstallRequest request, Deferred<InstalledBehaviour> answer) {
@@ -166,8 +172,17 @@ final class FabricInstaller implements BundleInstaller {
             return failed(Problem.CLOSED, "node " + self() + " has no Bundle Installer Service");
         }
         List<String> online = online();
-        if (online.isEmpty() || !sending.joined()) {
-            return mine.find(consumedTypes); // alone: exactly as the node's own installer
+        if (online.isEmpty() || !sending.joined()) { // alone: the node's own installer, else a departed node
+            List<String> types = List.copyOf(consumedTypes);
+            Promise<List<BehaviourCandidate>> own = mine.find(types);
+            if (!own.isDone()) {
+                return own.map(found -> found.isEmpty() ? Departed.candidates(nodes.get(), types) : found);
+            }
+            try { // answered from memory: answer at once too (the BMS uses an answer that is done on the spot)
+                return own.getValue().isEmpty() ? Promises.resolved(Departed.candidates(nodes.get(), types)) : own;
+            } catch (InvocationTargetException | InterruptedException e) {
+                return own;
+            }
         }
         Deferred<List<BehaviourCandidate>> answer = new Deferred<>();
         return later(answer, () -> bid(List.copyOf(consumedTypes), online, answer));
@@ -257,7 +272,7 @@ final class FabricInstaller implements BundleInstaller {
         }
         Offer chosen = InstallChoice.choose(bid.offers.values());
         if (chosen == null) {
-            bid.answer.resolve(List.of());
+            bid.answer.resolve(Departed.candidates(nodes.get(), bid.types));
             return;
         }
         List<BehaviourCandidate> candidates = new ArrayList<>();
@@ -281,6 +296,10 @@ final class FabricInstaller implements BundleInstaller {
     private void order(InstallRequest request, Deferred<InstalledBehaviour> answer) {
         RemoteNode target = node.apply(request.node);
         Order order = new Order(UUID.randomUUID().toString(), request.node, request, answer);
+        if (target.status == Presence.OFFLINE && Departed.takes(target.interest, request.consumedTypes)) {
+            awaitReturn(order);
+            return;
+        }
         if (target.status != Presence.ONLINE) {
             answer.fail(new InstallException(Problem.START_FAILED, "node " + order.node + " is "
                     + target.status.name().toLowerCase() + ": it cannot install " + order.what()));
@@ -301,6 +320,20 @@ final class FabricInstaller implements BundleInstaller {
                 + " install " + order.what() + " within " + settings.installTimeoutMillis() + " ms (install.timeout.ms)"
                 + (order.installed == null ? ": no answer" : ": installed, but its interest did not arrive")),
                 settings.installTimeoutMillis(), TimeUnit.MILLISECONDS);
+    }
+
+    /** An order to a departed node: nothing to send, it resolves when the node is back with the interest. */
+    private void awaitReturn(Order order) {
+        order.awaitingReturn = true;
+        order.installed = new InstalledBehaviour();
+        order.installed.symbolicName = order.request.symbolicName;
+        orders.put(order.id, order);
+        host.info("Fabric {}: events of {} wait for node {}, offline, whose behaviours took them (at most {} ms, "
+                + "install.timeout.ms)", settings.fabric(), order.request.consumedTypes, order.node,
+                settings.installTimeoutMillis());
+        order.timeout = in.schedule(() -> fail(order, Problem.ACTIVATION_TIMEOUT, "node " + order.node + " did not "
+                + "come back within " + settings.installTimeoutMillis() + " ms (install.timeout.ms) to take events of "
+                + order.request.consumedTypes), settings.installTimeoutMillis(), TimeUnit.MILLISECONDS);
     }
 
     private void fail(Order order, Problem problem, String message) {
@@ -354,6 +387,9 @@ final class FabricInstaller implements BundleInstaller {
         for (Order order : List.copyOf(orders.values())) {
             if (!order.node.equals(name)) {
                 continue;
+            }
+            if (n.status != Presence.ONLINE && order.awaitingReturn) {
+                continue; // still away
             }
             if (n.status != Presence.ONLINE) {
                 fail(order, Problem.START_FAILED, "node " + name + " went offline while installing " + order.what());

@@ -81,8 +81,7 @@ class RemoteInstallTest {
 
     /** A started node whose own installer is {@code installer}. */
     TestNode node(String name, FakeInstaller installer) throws Exception {
-        TestNode n = new TestNode(name, Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name))
-                .withResendTimeout(1000).withKeepAlive(2).withInstall(100, 30_000));
+        TestNode n = new TestNode(name, settings(name));
         nodes.add(n);
         n.start();
         n.fabric.localInstaller(installer);
@@ -204,6 +203,62 @@ class RemoteInstallTest {
         assertThat(recorder.seqs()).containsExactlyElementsOf(LongStream.rangeClosed(1, 50).boxed().toList());
         assertThat(atA.installs).hasSize(1);
         assertThat(atB.installs).isEmpty();
+    }
+
+    /**
+     * The receiving node is killed and, once the others saw its Last Will, started again with its state: the events
+     * published meanwhile, which no node online takes, are held by the publisher's BMS for it (its last interest
+     * took them) and reach it when it is back, with every other event: once each, in publish order.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void eventsPublishedWhileTheirNodeIsDownReachItWhenItIsBack(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a", new FakeInstaller()); // no repository offers the behaviour: only b has it
+        Recorder before = new Recorder();
+        TestNode b = new TestNode("b", settings("b"));
+        nodes.add(b);
+        b.addBehaviour(before, null, MOVED);
+        b.start();
+        b.fabric.localInstaller(new FakeInstaller());
+        awaitOnline(a, b);
+        await("b's interest seen by a").atMost(DEADLINE).until(() -> a.fabric.nodes().stream()
+                .anyMatch(v -> v.node().equals("b") && !v.interest().isEmpty()));
+        MiniBms bms = new MiniBms(a.fabric.installer(), MOVED);
+        a.bus.policy(bms);
+        for (int i = 1; i <= 100; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        await().atMost(DEADLINE).until(() -> before.got.size() == 100);
+
+        b.crash();
+        await("b offline for a (its Last Will)").atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
+        for (int i = 101; i <= 300; i++) {
+            a.bus.deliver(new Moved("r1", i)); // nobody online takes them
+        }
+        assertThat(bms.found.get(30, TimeUnit.SECONDS)).extracting(cand -> cand.node).containsExactly("b");
+
+        Recorder after = new Recorder();
+        TestNode b2 = new TestNode("b", settings("b")); // started again with its state
+        nodes.add(b2);
+        b2.addBehaviour(after, null, MOVED);
+        b2.start();
+        b2.fabric.localInstaller(new FakeInstaller());
+        bms.outcome.get(30, TimeUnit.SECONDS);
+        for (int i = 301; i <= 400; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        await().atMost(DEADLINE).until(() -> after.got.size() >= 300);
+        await().during(Duration.ofMillis(300)).atMost(DEADLINE).until(() -> after.got.size() == 300);
+        assertThat(after.seqs()).as("the held events and the newer ones, once each, in publish order")
+                .containsExactlyElementsOf(LongStream.rangeClosed(101, 400).boxed().toList());
+        assertThat(a.bus.held()).isEmpty();
+        assertThat(a.log).anyMatch(l -> l.contains("wait for node b"));
+    }
+
+    Settings settings(String name) {
+        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
+                .withKeepAlive(2).withInstall(100, 30_000);
     }
 
     @Test
