@@ -7,6 +7,7 @@ import com.github.dockerjava.api.DockerClient;
 import java.nio.charset.StandardCharsets;
 import java.time.Duration;
 import java.util.regex.Pattern;
+import org.awaitility.core.ConditionTimeoutException;
 import org.junit.jupiter.api.AfterAll;
 import org.junit.jupiter.api.BeforeAll;
 import org.junit.jupiter.api.MethodOrderer;
@@ -108,11 +109,22 @@ class EventsAcrossContainersTest {
     }
 
     private static FederatedProbes.Counts awaitAll(String run, long count) {
-        await("node B counted every event of run " + run).atMost(DELIVERY_TIMEOUT)
-                .pollInterval(Duration.ofMillis(250))
-                .until(() -> FederatedProbes.lastCounts(nodeB.logs(), run).map(c -> c.distinct() == count)
-                        .orElse(false));
+        try {
+            await("node B counted every event of run " + run).atMost(DELIVERY_TIMEOUT)
+                    .pollInterval(Duration.ofMillis(250))
+                    .until(() -> FederatedProbes.lastCounts(nodeB.logs(), run).map(c -> c.distinct() == count)
+                            .orElse(false));
+        } catch (ConditionTimeoutException e) {
+            throw new AssertionError(e.getMessage() + "; node B counted "
+                    + FederatedProbes.lastCounts(nodeB.logs(), run) + "\n--- node A's log, its end:\n"
+                    + tail(nodeA.logs()) + "\n--- node B's:\n" + tail(nodeB.logs()), e);
+        }
         return FederatedProbes.lastCounts(nodeB.logs(), run).orElseThrow();
+    }
+
+    private static String tail(String log) {
+        String[] lines = log.split("\n");
+        return String.join("\n", java.util.Arrays.copyOfRange(lines, Math.max(0, lines.length - 40), lines.length));
     }
 
     private static int occurrences(String text, String what) {

@@ -29,6 +29,7 @@ final class Departed {
                 .sorted((a, b) -> a.name.compareTo(b.name)).forEach(n -> {
                     BehaviourCandidate c = new BehaviourCandidate();
                     c.symbolicName = behaviourOf(n.name);
+                    c.version = BACK;
                     c.consumed = List.copyOf(types);
                     c.node = n.name;
                     out.add(c);
@@ -38,8 +39,11 @@ final class Departed {
 
     /** The name a departed node's behaviour goes by in the BMS's requests and history. */
     static String behaviourOf(String node) {
-        return "the behaviour of node " + node + " (offline)";
+        return "node " + node + "'s behaviours";
     }
+
+    /** The version a departed node's behaviour goes by: what its install waits for. */
+    static final String BACK = "(once back online)";
 
     /** @return whether an entry of the interest consumes one of the types (no types: any interest) */
     static boolean takes(List<InterestEntry> interest, List<String> types) {

@@ -296,8 +296,9 @@ final class FabricInstaller implements BundleInstaller {
     private void order(InstallRequest request, Deferred<InstalledBehaviour> answer) {
         RemoteNode target = node.apply(request.node);
         Order order = new Order(UUID.randomUUID().toString(), request.node, request, answer);
-        if (target.status == Presence.OFFLINE && Departed.takes(target.interest, request.consumedTypes)) {
+        if (Departed.behaviourOf(order.node).equals(request.symbolicName)) {
             awaitReturn(order);
+            interestArrived(order); // back already
             return;
         }
         if (target.status != Presence.ONLINE) {
@@ -327,6 +328,7 @@ final class FabricInstaller implements BundleInstaller {
         order.awaitingReturn = true;
         order.installed = new InstalledBehaviour();
         order.installed.symbolicName = order.request.symbolicName;
+        order.installed.version = Departed.BACK;
         orders.put(order.id, order);
         host.info("Fabric {}: events of {} wait for node {}, offline, whose behaviours took them (at most {} ms, "
                 + "install.timeout.ms)", settings.fabric(), order.request.consumedTypes, order.node,

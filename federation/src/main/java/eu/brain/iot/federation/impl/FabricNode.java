@@ -187,8 +187,10 @@ public final class FabricNode implements AutoCloseable {
         joinedBefore = true;
         try {
             link.subscribe(topics.subscriptions(settings.node()));
-            publishPresence(Wire.Status.ONLINE);
+            // the interest before the presence: a node that sees this one come back routes by its fresh interest,
+            // never by the one retained from before (a behaviour may not be back yet; what it took stays held)
             publishInterest();
+            publishPresence(Wire.Status.ONLINE);
             joined = true;
             host.info("Fabric {}: node {} joined through {}{}", settings.fabric(), settings.node(),
                     settings.brokerUri(), again ? " again" : "");
