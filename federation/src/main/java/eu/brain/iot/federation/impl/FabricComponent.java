@@ -10,10 +10,14 @@ import java.util.List;
 import java.util.Locale;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.atomic.AtomicBoolean;
 
+import org.osgi.framework.Bundle;
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
 import org.osgi.framework.Filter;
+import org.osgi.framework.FrameworkEvent;
+import org.osgi.framework.FrameworkListener;
 import org.osgi.framework.FrameworkUtil;
 import org.osgi.framework.InvalidSyntaxException;
 import org.osgi.framework.ServiceReference;
@@ -70,6 +74,13 @@ public final class FabricComponent implements Host {
     private final FabricNode node;
     private final String problem;
     private final ServiceTracker<Object, InterestEntry> behaviours;
+    /** Whether the node was started (once): by SCR's thread, or the framework's event thread once started. */
+    private final AtomicBoolean joining = new AtomicBoolean();
+    private final FrameworkListener untilStarted = e -> {
+        if (e.getType() == FrameworkEvent.STARTED) {
+            join();
+        }
+    };
     /** The interest of each tracked behaviour; written by the framework's service events (the tracker). */
     private final Map<ServiceReference<Object>, InterestEntry> interest = new ConcurrentHashMap<>();
     /** The fabric's installer while registered (guarded by this component's monitor). */
@@ -119,7 +130,7 @@ public final class FabricComponent implements Host {
         if (node != null) {
             behaviours.open();
             announce();
-            node.start();
+            joinOnceStarted();
         }
     }
 
@@ -238,8 +249,33 @@ public final class FabricComponent implements Host {
         }
     }
 
+    /**
+     * Join the fabric once the framework has started: every bundle of every start level is up, with the behaviours
+     * it registers at start-up. A node that joined earlier would take events other nodes kept for its behaviours
+     * (after its restart) before those behaviours are back, and have nobody to give them to.
+     */
+    private void joinOnceStarted() {
+        Bundle system = context.getBundle(Constants.SYSTEM_BUNDLE_LOCATION);
+        if (system.getState() != Bundle.ACTIVE) {
+            log.info("Fabric: this node joins once its framework has started (every start level up)");
+            context.addFrameworkListener(untilStarted);
+            if (system.getState() != Bundle.ACTIVE) {
+                return;
+            }
+            context.removeFrameworkListener(untilStarted); // started meanwhile
+        }
+        join();
+    }
+
+    private void join() {
+        if (joining.compareAndSet(false, true)) {
+            node.start();
+        }
+    }
+
     @Deactivate
     void deactivate() {
+        context.removeFrameworkListener(untilStarted);
         unregisterInstaller();
         if (node != null) {
             behaviours.close();
