@@ -82,7 +82,7 @@ public final class FabricNode implements AutoCloseable {
         this.in = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-in"));
         String self = settings.node();
         this.link = new MqttLink(settings, key, topics.status(self),
-                wire.status(new Wire.Status(self, Wire.Status.OFFLINE, System.currentTimeMillis())),
+                since -> wire.status(new Wire.Status(self, Wire.Status.OFFLINE, System.currentTimeMillis(), since)),
                 new MqttLink.Listener() {
                     @Override
                     public void connected() {
@@ -204,7 +204,8 @@ public final class FabricNode implements AutoCloseable {
 
     private void publishPresence(String state) throws IOException, InterruptedException {
         String self = settings.node();
-        link.publish(topics.status(self), wire.status(new Wire.Status(self, state, System.currentTimeMillis())),
+        link.publish(topics.status(self), wire.status(new Wire.Status(self, state, System.currentTimeMillis(),
+                link.since())),
                 true);
     }
 
@@ -429,7 +430,8 @@ public final class FabricNode implements AutoCloseable {
 
     public List<NodeView> nodes() {
         Map<String, NodeView> views = new TreeMap<>();
-        views.put(settings.node(), new NodeView(settings.node(), joined() ? "online (this node)" : "joining (this node)",
+        String mine = joined() ? "online (this node)" : "joining (this node)";
+        views.put(settings.node(), new NodeView(settings.node(), mine,
                 localInterest, new NodeStats().snapshot()));
         nodes.values().forEach(n -> views.put(n.name, new NodeView(n.name, n.status.name().toLowerCase(),
                 n.interest, n.stats.snapshot())));

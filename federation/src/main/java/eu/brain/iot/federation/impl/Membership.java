@@ -65,6 +65,10 @@ final class Membership {
             return;
         }
         RemoteNode node = node(from);
+        if (status.since() < node.statusSince) {
+            return; // about a connection replaced already (a late Last Will)
+        }
+        node.statusSince = status.since();
         Presence before = node.status;
         node.status = Wire.Status.ONLINE.equals(status.state()) ? Presence.ONLINE : Presence.OFFLINE;
         if (before != node.status) {

@@ -10,6 +10,7 @@ import java.security.KeyStore;
 import java.util.List;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
+import java.util.function.LongFunction;
 
 import javax.net.ssl.SSLContext;
 import javax.net.ssl.TrustManagerFactory;
@@ -65,8 +66,12 @@ final class MqttLink {
     private final MqttConnectionOptions options;
     private volatile MqttAsyncClient client;
     private volatile Semaphore inFlight = new Semaphore(MAX_IN_FLIGHT);
+    private final String willTopic;
+    private final LongFunction<byte[]> willPayload;
+    /** When the current connection began: its online status and its Last Will name it. */
+    private volatile long since;
 
-    MqttLink(Settings settings, FabricKey key, String willTopic, byte[] willPayload, Listener listener)
+    MqttLink(Settings settings, FabricKey key, String willTopic, LongFunction<byte[]> willPayload, Listener listener)
             throws IOException {
         this.settings = settings;
         this.key = key;
@@ -79,9 +84,8 @@ final class MqttLink {
         options.setAutomaticReconnect(false);
         options.setConnectionTimeout(10);
         options.setMaximumPacketSize(MAX_PACKET_BYTES);
-        MqttMessage will = signed(willTopic, willPayload, true);
-        options.setWill(willTopic, will);
-        options.setWillMessageProperties(will.getProperties()); // a will's properties travel apart from it
+        this.willTopic = willTopic;
+        this.willPayload = willPayload;
         if (!settings.username().isEmpty()) {
             options.setUserName(settings.username());
             options.setPassword(settings.password().getBytes(StandardCharsets.UTF_8));
@@ -146,12 +150,21 @@ final class MqttLink {
         }
         discard(client);
         client = newClient();
+        since = System.currentTimeMillis();
+        MqttMessage will = signed(willTopic, willPayload.apply(since), true);
+        options.setWill(willTopic, will);
+        options.setWillMessageProperties(will.getProperties()); // a will's properties travel apart from it
         try {
             client.connect(options).waitForCompletion(TimeUnit.SECONDS.toMillis(15));
         } catch (MqttException e) {
             throw new IOException("cannot connect to the broker " + settings.brokerUri() + ": " + e.getMessage()
                     + (e.getCause() != null ? " (" + e.getCause().getMessage() + ")" : ""), e);
         }
+    }
+
+    /** @return when the current connection began */
+    long since() {
+        return since;
     }
 
     boolean isConnected() {

@@ -20,6 +20,8 @@ final class RemoteNode {
     volatile Presence status = Presence.UNKNOWN;
     volatile List<InterestEntry> interest = List.of();
     volatile long interestSent;
+    /** The connection the applied status is about ({@link Wire.Status#since}). */
+    long statusSince;
     final Map<InterestEntry, AutoCloseable> forwarders = new LinkedHashMap<>();
 
     RemoteNode(String name) {

@@ -130,8 +130,13 @@ final class Wire {
         return new Interest(text(root, "node"), number(root, "sent"), entries);
     }
 
-    /** A node's presence, retained under its status topic; the broker publishes the offline one as Last Will. */
-    record Status(String node, String state, long sent) {
+    /**
+     * A node's presence, retained under its status topic; the broker publishes the offline one as Last Will.
+     * {@code since} names the connection it is about (the time it began): the online status and the Last Will of one
+     * connection share it, so a receiver applies a status only when it is about the newest connection it knows (a
+     * broker restarted with its sessions may publish the Last Will of a connection that was replaced already).
+     */
+    record Status(String node, String state, long sent, long since) {
         static final String ONLINE = "online";
         static final String OFFLINE = "offline";
     }
@@ -142,7 +147,8 @@ final class Wire {
 
     Status readStatus(byte[] payload) throws MalformedException {
         JsonNode root = tree(payload);
-        return new Status(text(root, "node"), text(root, "state"), number(root, "sent"));
+        return new Status(text(root, "node"), text(root, "state"), number(root, "sent"),
+                root.path("since").asLong(0));
     }
 
     /**

@@ -173,6 +173,24 @@ class FabricComponentIntegrationTest {
         publish(key, BASE + "peer/interest", "{\"node\":\"peer\",\"sent\":" + now
                 + ",\"entries\":[{\"types\":[\"it.Pong\"],\"filter\":\"(n>=1)\"}]}", true);
         await().atMost(DEADLINE).until(() -> forwarderTo("peer") != null);
+
+        // a Last Will of a connection the peer replaced already (a broker restarted with its sessions publishes it
+        // late) does not take the peer offline; its current connection's does, and its next online brings it back
+        publish(key, BASE + "peer/status", "{\"node\":\"peer\",\"state\":\"online\",\"sent\":" + now
+                + ",\"since\":" + (now + 2) + "}", true);
+        publish(key, BASE + "peer/status", "{\"node\":\"peer\",\"state\":\"offline\",\"sent\":" + now
+                + ",\"since\":" + (now + 1) + "}", true);
+        // then an interest with one more entry: once its forwarder is there, the statuses before it were applied
+        publish(key, BASE + "peer/interest", "{\"node\":\"peer\",\"sent\":" + (now + 1) + ",\"entries\":[{\"types\":"
+                + "[\"it.Pong\"],\"filter\":\"(n>=1)\"},{\"types\":[\"it.Marker\"]}]}", true);
+        await().atMost(DEADLINE).until(() -> forwarderFor("it.Marker") != null);
+        assertThat(forwarderTo("peer")).as("a late Last Will is ignored").isNotNull();
+        publish(key, BASE + "peer/status", "{\"node\":\"peer\",\"state\":\"offline\",\"sent\":" + now
+                + ",\"since\":" + (now + 2) + "}", true);
+        await().atMost(DEADLINE).until(() -> forwarderTo("peer") == null);
+        publish(key, BASE + "peer/status", "{\"node\":\"peer\",\"state\":\"online\",\"sent\":" + now
+                + ",\"since\":" + (now + 3) + "}", true);
+        await().atMost(DEADLINE).until(() -> forwarderTo("peer") != null);
         bus.deliver("it.Pong", Map.of("n", 0)); // the peer's filter does not take it
         bus.deliver("it.Pong", Map.of("n", 1));
         String eventsTopic = BASE + "peer/events/it-node";
@@ -315,6 +333,12 @@ class FabricComponentIntegrationTest {
         public List<InstalledBehaviour> installed() {
             return List.of();
         }
+    }
+
+    private ServiceReference<?> forwarderFor(String type) throws Exception {
+        ServiceReference<?>[] refs = context.getServiceReferences(EventForwarder.class.getName(),
+                "(" + SmartBehaviourNamespace.CONSUMED_PROPERTY + "=" + type + ")");
+        return refs == null ? null : refs[0];
     }
 
     private ServiceReference<?> forwarderTo(String node) throws Exception {
