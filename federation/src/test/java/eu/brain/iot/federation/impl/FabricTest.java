@@ -3,8 +3,6 @@ package eu.brain.iot.federation.impl;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
 import java.util.ArrayList;
 import java.util.HashSet;
@@ -13,9 +11,6 @@ import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Assumptions;
-import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -28,50 +23,15 @@ import eu.brain.iot.federation.impl.Events.Recorder;
  * Several fabric nodes in one JVM (each: the real bus core and a real {@link FabricNode}) joined by a real MQTT 5
  * broker started by the test on a free port: Mosquitto (skipped where its binary is missing) and embedded HiveMQ CE.
  */
-class FabricTest {
+class FabricTest extends FabricTestBase {
 
     static final Duration DEADLINE = Duration.ofSeconds(60);
     static final String MOVED = Moved.class.getName();
 
-    @TempDir
-    Path tmp;
-    Broker broker;
-    Path key;
-    final List<TestNode> nodes = new ArrayList<>();
 
-    @AfterEach
-    void tearDown(org.junit.jupiter.api.TestInfo info) throws Exception {
-        StringBuilder report = new StringBuilder(info.getDisplayName()).append('\n');
-        for (TestNode n : nodes) {
-            n.log.forEach(l -> report.append(n.name).append(": ").append(l).append('\n'));
-        }
-        Files.createDirectories(Path.of("target"));
-        Files.writeString(Path.of("target", "fabric-test-" + info.getTestMethod().get().getName() + ".log"), report);
-        for (TestNode n : nodes) {
-            try {
-                n.close();
-            } catch (RuntimeException e) {
-                // crashed already
-            }
-        }
-        if (broker != null) {
-            broker.close();
-        }
-    }
-
-    void startBroker(Broker.Kind kind) throws Exception {
-        if (kind == Broker.Kind.MOSQUITTO) {
-            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
-                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
-        }
-        broker = Broker.of(kind, tmp.resolve("broker"));
-        key = tmp.resolve("fabric.key");
-        FabricKey.generate(key);
-    }
-
-    Settings settings(String name) {
-        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
-                .withKeepAlive(2);
+    @Override
+    String logPrefix() {
+        return "fabric-test";
     }
 
     TestNode node(String name) throws Exception {

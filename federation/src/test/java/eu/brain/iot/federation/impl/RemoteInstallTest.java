@@ -3,20 +3,14 @@ package eu.brain.iot.federation.impl;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
-import java.nio.file.Files;
-import java.nio.file.Path;
 import java.time.Duration;
-import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.LongStream;
 
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
-import org.junit.jupiter.api.io.TempDir;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 import org.osgi.util.promise.Deferred;
@@ -36,48 +30,18 @@ import eu.brain.iot.federation.impl.Events.Recorder;
  * part of it that uses the installer ({@link MiniBms}). Bids, offers, orders and results are the fabric's real,
  * signed messages.
  */
-class RemoteInstallTest {
+class RemoteInstallTest extends FabricTestBase {
 
     static final Duration DEADLINE = Duration.ofSeconds(60);
     static final String MOVED = Moved.class.getName();
     static final String RECORDER = "eu.brain.iot.test.recorder";
 
-    @TempDir
-    Path tmp;
-    Broker broker;
-    Path key;
-    final List<TestNode> nodes = new ArrayList<>();
 
-    @AfterEach
-    void tearDown(org.junit.jupiter.api.TestInfo info) throws Exception {
-        StringBuilder report = new StringBuilder(info.getDisplayName()).append('\n');
-        for (TestNode n : nodes) {
-            n.log.forEach(l -> report.append(n.name).append(": ").append(l).append('\n'));
-        }
-        Files.createDirectories(Path.of("target"));
-        Files.writeString(Path.of("target", "remote-install-" + info.getTestMethod().get().getName() + ".log"),
-                report);
-        for (TestNode n : nodes) {
-            try {
-                n.close();
-            } catch (RuntimeException e) {
-                // crashed already
-            }
-        }
-        if (broker != null) {
-            broker.close();
-        }
+    @Override
+    String logPrefix() {
+        return "remote-install";
     }
 
-    void startBroker(Broker.Kind kind) throws Exception {
-        if (kind == Broker.Kind.MOSQUITTO) {
-            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
-                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
-        }
-        broker = Broker.of(kind, tmp.resolve("broker"));
-        key = tmp.resolve("fabric.key");
-        FabricKey.generate(key);
-    }
 
     /** A started node whose own installer is {@code installer}. */
     TestNode node(String name, FakeInstaller installer) throws Exception {
@@ -256,9 +220,9 @@ class RemoteInstallTest {
         assertThat(a.log).anyMatch(l -> l.contains("wait for node b"));
     }
 
+    @Override
     Settings settings(String name) {
-        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
-                .withKeepAlive(2).withInstall(100, 30_000);
+        return super.settings(name).withInstall(100, 30_000);
     }
 
     @Test
