@@ -176,6 +176,11 @@ trap 'exit 143' TERM
 trap 'exit 129' HUP
 
 if [[ -z $broker_uri ]]; then
+  if (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
+    echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
+      "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
+    exit 1
+  fi
   newer=
   [[ -f $broker_jar ]] && newer="$(find "$root/broker/src/main" "$root/broker/pom.xml" "$root/pom.xml" \
     -newer "$broker_jar" -type f -print -quit)"
@@ -188,11 +193,6 @@ if [[ -z $broker_uri ]]; then
       grep -a '^\[ERROR\]' "$root/broker/target/broker-build.log" | head -20 | sed 's/^/  /' >&2
       exit 1
     }
-  fi
-  if (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
-    echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
-      "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
-    exit 1
   fi
   broker_log="$state_dir/broker.log"
   java -jar "$broker_jar" --port "$broker_port" --data "$state_dir/broker" >"$broker_log" 2>&1 </dev/null &
