@@ -123,7 +123,9 @@ class FabricTest extends FabricTestBase {
         broker.restart();
         publisher.join(DEADLINE.toMillis());
 
-        await().atMost(DEADLINE).until(() -> r.got.size() >= total && a.statsOf("b").backlog() == 0);
+        await().atMost(DEADLINE).untilAsserted(() -> assertThat(r.got.size() + " received, backlog "
+                + a.statsOf("b").backlog() + ", b " + a.statusOf("b") + " at a")
+                .isEqualTo(total + " received, backlog 0, b online at a"));
         assertThat(r.seqs()).as("every event once, in publish order").isEqualTo(range(1, total));
         assertThat(a.bus.statistics(MOVED).unhandled).isZero();
     }

@@ -13,7 +13,7 @@ import org.junit.jupiter.api.io.TempDir;
 /**
  * What the multi-node tests share: a real broker started per test on a free port (Mosquitto, skipped where its
  * binary is missing, or embedded HiveMQ CE), the fabric's key, and the nodes a test starts; after each test, every
- * node's log goes to {@code target/<prefix>-<test>.log}, then the nodes and the broker are stopped.
+ * node's log goes to {@code target/<prefix>-<test>[-<run>].log}, then the nodes and the broker are stopped.
  */
 abstract class FabricTestBase {
 
@@ -33,7 +33,10 @@ abstract class FabricTestBase {
             n.log.forEach(l -> report.append(n.name).append(": ").append(l).append('\n'));
         }
         Files.createDirectories(Path.of("target"));
-        Files.writeString(Path.of("target", logPrefix() + "-" + info.getTestMethod().get().getName() + ".log"),
+        // a parameterised test's runs each get their own file: "[1] kind=MOSQUITTO" gives "-1-kind-MOSQUITTO"
+        String run = info.getDisplayName().startsWith("[")
+                ? "-" + info.getDisplayName().replaceAll("[^A-Za-z0-9]+", "-").replaceAll("^-|-$", "") : "";
+        Files.writeString(Path.of("target", logPrefix() + "-" + info.getTestMethod().get().getName() + run + ".log"),
                 report);
         for (TestNode n : nodes) {
             try {

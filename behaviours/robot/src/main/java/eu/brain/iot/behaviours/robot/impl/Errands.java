@@ -49,6 +49,8 @@ final class Errands {
     /** Robots that may go for carts at once (the wave's size). */
     private final int wave;
     private final Map<String, Cell> docks = new HashMap<>();
+    /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
+    private final Map<String, Cell> remembered = new HashMap<>();
     /** The robots this table has taken over ({@link #adopt}): each once. */
     private final Set<String> adopted = new HashSet<>();
     /** Storage cells given to a cart being carried there. */
@@ -78,8 +80,9 @@ final class Errands {
      * <li>heading for, or standing on, a cart on the floor that no robot claimed: it goes for that cart;</li>
      * <li>anywhere else outside the docking area: it goes home.</li>
      * </ul>
-     * A robot first seen outside the docking area gets the nearest docking cell that is no other robot's dock and
-     * where no other robot stands.
+     * A robot first seen parked in the docking area has its dock there; one first seen elsewhere, or moving, gets
+     * the dock an earlier run learnt for it ({@link #remember}) when that is free, else a free docking cell
+     * ({@link #dockFor}).
      *
      * @param s      the robot now
      * @param carts  the carts now
@@ -93,12 +96,10 @@ final class Errands {
             seen(s, grid);
             return false;
         }
-        if (grid.area(s.cell()) == Grid.DOCKING) {
-            docks.putIfAbsent(robot, s.cell());
+        if (grid.area(s.cell()) == Grid.DOCKING && (s.idle() || !remembered.containsKey(robot))) {
+            docks.putIfAbsent(robot, s.cell()); // parked: at its dock (a fresh start)
         } else if (!docks.containsKey(robot)) {
-            Set<Cell> taken = new HashSet<>(docks.values());
-            robots.stream().filter(o -> !o.id().equals(robot)).forEach(o -> taken.add(o.cell()));
-            Cell dock = grid.nearest(s.cell(), c -> grid.area(c) == Grid.DOCKING && !taken.contains(c), Set.of());
+            Cell dock = dockFor(robot, s.cell(), grid, robots);
             if (dock != null) {
                 docks.put(robot, dock);
             }
@@ -127,6 +128,40 @@ final class Errands {
             errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, dock));
         }
         return true;
+    }
+
+    /**
+     * The dock of a robot first met out on the floor: the one an earlier run learnt for it, unless another robot has
+     * it now; else the nearest docking cell that is no robot's dock (nor remembered as one) and where no other robot
+     * stands, first among those next to no such cell (robots parked side by side at the edge of the docking area
+     * stood in each other's way in and out), then among all.
+     */
+    private Cell dockFor(String robot, Cell from, Grid grid, List<RobotState> robots) {
+        Cell known = remembered.get(robot);
+        if (known != null && !docks.containsValue(known)) {
+            return known;
+        }
+        Set<Cell> taken = new HashSet<>(docks.values());
+        remembered.forEach((r, c) -> taken.add(c));
+        robots.stream().filter(o -> !o.id().equals(robot)).forEach(o -> taken.add(o.cell()));
+        Cell spaced = grid.nearest(from, c -> grid.area(c) == Grid.DOCKING && !taken.contains(c)
+                && grid.neighbours(c).stream().noneMatch(taken::contains), Set.of());
+        return spaced != null ? spaced
+                : grid.nearest(from, c -> grid.area(c) == Grid.DOCKING && !taken.contains(c), Set.of());
+    }
+
+    /** Docks an earlier run of this behaviour learnt, for robots not seen yet. */
+    synchronized void remember(Map<String, Cell> kept) {
+        kept.forEach((robot, c) -> {
+            if (!adopted.contains(robot)) {
+                remembered.put(robot, c);
+            }
+        });
+    }
+
+    /** @return the docks learnt so far, a copy */
+    synchronized Map<String, Cell> docks() {
+        return Map.copyOf(docks);
     }
 
     /** @return whether {@link #adopt} has taken the robot over already */

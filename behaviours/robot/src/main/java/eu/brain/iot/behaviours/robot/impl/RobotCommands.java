@@ -7,6 +7,9 @@ import java.util.Map;
 import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.EdgeCommand;
+import eu.brain.iot.edge.api.GoToCommand;
+import eu.brain.iot.edge.api.PickCartCommand;
+import eu.brain.iot.edge.api.PlaceCartCommand;
 
 /**
  * One robot's commands reach it in the order they were given: the next is published only when the edge has
@@ -25,6 +28,8 @@ final class RobotCommands {
     private final CommandLedger ledger;
     /** Per robot: the command sent and not answered yet (head), then those waiting for it. */
     private final Map<String, ArrayDeque<Waiting>> queues = new HashMap<>();
+    /** Per robot: the fleet's mission id of the last pick it accepted. */
+    private final Map<String, Long> lastPick = new HashMap<>();
 
     RobotCommands(CommandLedger ledger) {
         this.ledger = ledger;
@@ -51,9 +56,29 @@ final class RobotCommands {
     CommandLedger.Sent answered(CommandOutcome o) {
         CommandLedger.Sent sent = ledger.answered(o);
         if (sent != null) {
+            if (sent.command() instanceof PickCartCommand && o.accepted && o.missionId != null) {
+                synchronized (this) {
+                    lastPick.put(sent.command().deviceId, o.missionId);
+                }
+            }
             next(sent.command().deviceId);
         }
         return sent;
+    }
+
+    /**
+     * Whether a pick sent to the robot has not shown in the device model yet: it waits for its turn, waits for the
+     * edge's answer, or was accepted as a mission newer than the one the device model shows.
+     *
+     * @param shownMission the robot's mission as the device model shows it ({@code null}: none yet)
+     */
+    synchronized boolean pickUnseen(String robot, Long shownMission) {
+        ArrayDeque<Waiting> q = queues.get(robot);
+        if (q != null && q.stream().anyMatch(w -> w.command() instanceof PickCartCommand)) {
+            return true;
+        }
+        Long pick = lastPick.get(robot);
+        return pick != null && (shownMission == null || shownMission < pick);
     }
 
     private void next(String robot) {
@@ -79,5 +104,22 @@ final class RobotCommands {
                     command.getClass().getSimpleName(), why, e.getMessage());
             next(command.deviceId); // not sent: no outcome will come for it
         }
+    }
+
+    /** @return a new command like {@code c} (without its commandId), to send it again */
+    static EdgeCommand again(EdgeCommand c) {
+        EdgeCommand again;
+        if (c instanceof GoToCommand g) {
+            GoToCommand go = new GoToCommand();
+            go.x = g.x;
+            go.y = g.y;
+            again = go;
+        } else if (c instanceof PickCartCommand) {
+            again = new PickCartCommand();
+        } else {
+            again = new PlaceCartCommand();
+        }
+        again.deviceId = c.deviceId;
+        return again;
     }
 }

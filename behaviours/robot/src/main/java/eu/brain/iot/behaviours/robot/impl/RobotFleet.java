@@ -6,6 +6,7 @@ import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
 
+import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
@@ -76,10 +77,17 @@ public final class RobotFleet {
     /** The traffic planner's driver, or null when robot-sim plans the go-tos ({@code traffic} false). */
     private final TrafficControl traffic;
     private long lastFigures;
+    /** The docks learnt, kept for a run of this behaviour started again, and the map they were read for. */
+    static final String DOCK_BOOK = "docks.tsv";
+    private final DockBook book;
+    private volatile Grid bookOf;
 
     @Activate
-    public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config) {
+    public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config,
+            BundleContext context) {
         this.view = new FleetView(model);
+        java.io.File data = context == null ? null : context.getDataFile(DOCK_BOOK);
+        this.book = new DockBook(data == null ? null : data.toPath());
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
@@ -110,11 +118,16 @@ public final class RobotFleet {
             errands.seen(s.id(), s.cell(), s.area() == Grid.DOCKING);
             return;
         }
+        if (bookOf != grid.get()) {
+            bookOf = grid.get();
+            errands.remember(book.load(grid.get()));
+        }
         if (errands.knows(s.id())) {
             errands.seen(s, grid.get()); // every look at every robot: no read of the other robots and carts
             return;
         }
         if (errands.adopt(s, view.carts(), grid.get(), view.robots())) {
+            book.save(grid.get(), errands.docks());
             Errands.Errand e = errands.of(s.id());
             if (e.leg() != Errands.Leg.NONE) {
                 LOG.log(System.Logger.Level.INFO, "{0} taken over at {1}: {2}{3}, dock {4}", s.id(), s.cell(),
@@ -125,22 +138,18 @@ public final class RobotFleet {
 
     /**
      * Whether the cart the robot's errand says it carries is on the floor, put down by it: the robot stands idle and
-     * empty, the cart on the floor, and either the robot's last mission left it there (a place that finished, a pick
-     * that failed) or the robot has moved off the cart's cell (taken over while placing, it was sent on to a storage
-     * cell). Right after a pick is sent the robot stands on its cart, idle and
-     * empty, its last mission the go-to to the cart: that is not it.
+     * empty, the cart on the floor, and no pick this behaviour sent to the robot is still to show in the device model
+     * (right after a pick is sent the robot stands on its cart, idle and empty). This covers a place that finished, a
+     * pick that failed, and a robot taken over while placing, whatever it was told after.
      *
      * @return the cell of the cart on the floor, or {@code null}
      */
     Cell cartPutDown(RobotState s, Errands.Errand e) {
-        if (!s.idle() || s.carrying() || e.cart() == null) {
+        if (!s.idle() || s.carrying() || e.cart() == null || commands.pickUnseen(s.id(), s.missionId())) {
             return null;
         }
-        Optional<Cell> down = view.carts().stream().filter(c -> c.id().equals(e.cart()) && c.carriedBy() == null)
-                .map(c -> c.cell()).findFirst();
-        boolean left = "place".equals(s.missionType()) && "finished".equals(s.missionState())
-                || "pick".equals(s.missionType()) && "failed".equals(s.missionState());
-        return down.filter(cell -> left || !cell.equals(s.cell())).orElse(null);
+        return view.carts().stream().filter(c -> c.id().equals(e.cart()) && c.carriedBy() == null)
+                .map(c -> c.cell()).findFirst().orElse(null);
     }
 
     /**
@@ -420,7 +429,7 @@ public final class RobotFleet {
             return; // nothing to cancel: the robot's go-to had ended
         }
         if (n <= retries) {
-            EdgeCommand again = copy(sent.command());
+            EdgeCommand again = RobotCommands.again(sent.command());
             send(again, sent.why() + ", again");
             return;
         }
@@ -477,21 +486,5 @@ public final class RobotFleet {
 
     private void send(EdgeCommand command, String why) {
         commands.send(command, why); // in order: the next once the edge answered the one before
-    }
-
-    private static EdgeCommand copy(EdgeCommand c) {
-        EdgeCommand again;
-        if (c instanceof GoToCommand g) {
-            GoToCommand go = new GoToCommand();
-            go.x = g.x;
-            go.y = g.y;
-            again = go;
-        } else if (c instanceof PickCartCommand) {
-            again = new PickCartCommand();
-        } else {
-            again = new PlaceCartCommand();
-        }
-        again.deviceId = c.deviceId;
-        return again;
     }
 }

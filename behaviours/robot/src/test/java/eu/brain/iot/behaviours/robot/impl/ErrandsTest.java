@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThat;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -193,6 +194,54 @@ class ErrandsTest {
         Set<Cell> cells = new HashSet<>();
         carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> cells.add(c.cell()));
         return cells;
+    }
+
+    /** The paper's warehouse: three docks on the top row with a docking cell between each two. */
+    static final Grid PAPER = Grid.parse(String.join("\n",
+            "####################",
+            "#dRdRdRd....ssssss.#",
+            "#ddddddd....ssssss.#",
+            "#..................#",
+            "#..................#",
+            "#########D##########",
+            "#uuuuuuuuuuuuuuuuuu#",
+            "#uuCuuuuuuCuuuuuCuu#",
+            "#uuuuuuuuuuuuuuuuuu#",
+            "####################"));
+
+    @Test
+    void robotsTakenOverOnTheFloorGetDocksNoTwoOfWhichAreSideBySide() {
+        Errands errands = new Errands(4);
+        List<RobotState> all = List.of(robot("robot1", new Cell(11, 3), null, "running", new Cell(8, 1)),
+                robot("robot2", new Cell(12, 2), null, "running", new Cell(8, 1)),
+                robot("robot3", new Cell(10, 1), null, "running", new Cell(8, 1)));
+        all.forEach(r -> errands.adopt(r, List.of(), PAPER, all));
+
+        List<Cell> docks = all.stream().map(r -> errands.of(r.id()).dock()).toList();
+        assertThat(docks).doesNotContainNull().doesNotHaveDuplicates()
+                .allMatch(d -> PAPER.area(d) == Grid.DOCKING);
+        for (Cell d : docks) {
+            assertThat(PAPER.neighbours(d)).as("the neighbours of %s", d).doesNotContainAnyElementsOf(docks);
+        }
+    }
+
+    @Test
+    void robotsTakenOverOnTheFloorGoBackToTheDocksAnEarlierRunLearnt() {
+        Errands first = new Errands(4);
+        List<RobotState> docked = List.of(robot("robot1", new Cell(2, 1), null, null, null),
+                robot("robot2", new Cell(4, 1), null, null, null), robot("robot3", new Cell(6, 1), null, null, null));
+        docked.forEach(r -> first.adopt(r, List.of(), PAPER, docked));
+        Map<String, Cell> learnt = first.docks();
+        assertThat(learnt).containsEntry("robot1", new Cell(2, 1)).containsEntry("robot3", new Cell(6, 1));
+
+        Errands again = new Errands(4); // the behaviour started again while the robots are out
+        again.remember(learnt);
+        List<RobotState> out = List.of(robot("robot1", new Cell(11, 3), null, "running", new Cell(12, 1)),
+                robot("robot2", new Cell(12, 2), null, "finished", null),
+                robot("robot3", new Cell(7, 2), null, "running", new Cell(12, 2)));
+        out.forEach(r -> again.adopt(r, List.of(), PAPER, out));
+        assertThat(again.docks()).isEqualTo(learnt);
+        assertThat(again.of("robot2").leg()).isEqualTo(Errands.Leg.TO_DOCK);
     }
 
     private static RobotState robot(String id, Cell cell, String cart, String missionState, Cell goal) {
