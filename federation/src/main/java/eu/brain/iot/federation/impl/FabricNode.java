@@ -103,7 +103,8 @@ public final class FabricNode implements AutoCloseable {
                         in.execute(() -> onMessage(topic, payload, signature));
                     }
                 });
-        this.membership = new Membership(settings.fabric(), host, this::node, this::outbox,
+        this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
+                this::node, this::outbox,
                 destination -> (type, names, data) -> forward(destination, type, names, data));
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
@@ -269,11 +270,10 @@ public final class FabricNode implements AutoCloseable {
                 membership.onInterest(claimed, wire.readInterest(payload), stats);
                 installer.membershipChanged(claimed); // after the forwarders: an install waiting for them ends
             }
-            case Topics.STATUS -> {
-                membership.onStatus(claimed, wire.readStatus(payload), stats);
+            case Topics.STATUS -> membership.onStatus(claimed, wire.readStatus(payload), stats, () -> {
                 installer.membershipChanged(claimed);
                 sender.wake(); // a node back online: what was kept for it goes now
-            }
+            });
             case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats);
             default -> stats.malformed.increment();
             }

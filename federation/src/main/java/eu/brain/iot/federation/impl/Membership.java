@@ -2,7 +2,10 @@ package eu.brain.iot.federation.impl;
 
 import java.util.Collection;
 import java.util.List;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
 import java.util.function.Function;
+import java.util.function.LongSupplier;
 
 import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.federation.impl.RemoteNode.Presence;
@@ -12,20 +15,36 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
  * it: one per interest entry of each online node, added before withdrawn ones go, all gone when the node is offline
  * (its Last Will, or its goodbye). Signatures are checked before anything reaches this class.
  * <p>
- * Threads: the fabric's inbound thread only.
+ * A node's offline status is believed only once this node's own connection has outlived it by
+ * {@link #OFFLINE_CONFIRM_MILLIS}: a broker that shuts down publishes the Last Will of every client it still holds
+ * (Mosquitto does) just before it drops them all, this node included. Believed at once, such a will took the
+ * forwarders of a node that was not gone, and the events published until the broker was back found no consumer.
+ * When this node's connection drops meanwhile, the status is dropped: after the reconnection the broker's retained
+ * status of that node (or its next one) decides.
+ * <p>
+ * Threads: the fabric's inbound thread only (its scheduled confirmations run on it too).
  */
 final class Membership {
 
+    /** How long this node's own connection must outlive an offline status before it is believed. */
+    static final long OFFLINE_CONFIRM_MILLIS = 1000;
+
     private final String fabric;
     private final Host host;
+    private final ScheduledExecutorService in;
+    /** This node's connection now: when it started, or -1 while there is none. */
+    private final LongSupplier connection;
     private final Function<String, RemoteNode> nodes;
     private final Function<String, Outbox> outboxes;
     private final Function<String, EventForwarder> forwarders;
 
-    Membership(String fabric, Host host, Function<String, RemoteNode> nodes, Function<String, Outbox> outboxes,
+    Membership(String fabric, Host host, ScheduledExecutorService in, LongSupplier connection,
+            Function<String, RemoteNode> nodes, Function<String, Outbox> outboxes,
             Function<String, EventForwarder> forwarders) {
         this.fabric = fabric;
         this.host = host;
+        this.in = in;
+        this.connection = connection;
         this.nodes = nodes;
         this.outboxes = outboxes;
         this.forwarders = forwarders;
@@ -59,11 +78,31 @@ final class Membership {
         syncForwarders(node);
     }
 
-    void onStatus(String from, Wire.Status status, NodeStats stats) {
+    /**
+     * A node's status: online at once, offline once this node's connection has outlived it (class comment).
+     *
+     * @param applied run after the status was applied
+     */
+    void onStatus(String from, Wire.Status status, NodeStats stats, Runnable applied) {
         if (!status.node().equals(from)) {
             stats.malformed.increment();
             return;
         }
+        if (Wire.Status.ONLINE.equals(status.state())) {
+            apply(from, status);
+            applied.run();
+            return;
+        }
+        long seenOn = connection.getAsLong();
+        in.schedule(() -> {
+            if (seenOn >= 0 && connection.getAsLong() == seenOn) {
+                apply(from, status);
+                applied.run();
+            }
+        }, OFFLINE_CONFIRM_MILLIS, TimeUnit.MILLISECONDS);
+    }
+
+    private void apply(String from, Wire.Status status) {
         RemoteNode node = node(from);
         if (status.since() < node.statusSince) {
             return; // about a connection replaced already (a late Last Will)

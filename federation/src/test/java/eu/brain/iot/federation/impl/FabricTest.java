@@ -11,6 +11,17 @@ import java.util.Set;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
 
+import org.eclipse.paho.mqttv5.client.IMqttToken;
+import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
+import org.eclipse.paho.mqttv5.client.MqttCallback;
+import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
+import org.eclipse.paho.mqttv5.client.MqttDisconnectResponse;
+import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
+import org.eclipse.paho.mqttv5.common.MqttException;
+import org.eclipse.paho.mqttv5.common.MqttMessage;
+import org.eclipse.paho.mqttv5.common.MqttSubscription;
+import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
+import org.eclipse.paho.mqttv5.common.packet.UserProperty;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
 
@@ -127,6 +138,75 @@ class FabricTest extends FabricTestBase {
                 + a.statsOf("b").backlog() + ", b " + a.statusOf("b") + " at a")
                 .isEqualTo(total + " received, backlog 0, b online at a"));
         assertThat(r.seqs()).as("every event once, in publish order").isEqualTo(range(1, total));
+        assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+    }
+
+    /**
+     * A broker that shuts down publishes the Last Will of every client it holds (Mosquitto does), then drops them
+     * all: a sees b's will just before it loses the broker itself. The will must not take b's forwarders: the events
+     * published until the broker is back would find no consumer on a. The will is sent here as the broker would,
+     * signed, about b's connection, right before the restart.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aLastWillPublishedByABrokerShuttingDownIsNotBelieved(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder r = new Recorder();
+        b.addBehaviour(r, null, MOVED);
+        awaitInterest(a, b, 1);
+
+        String topic = new Topics("test").status("b");
+        byte[] will = new Wire().status(new Wire.Status("b", Wire.Status.OFFLINE, System.currentTimeMillis(),
+                System.currentTimeMillis()));
+        MqttAsyncClient broker0 = new MqttAsyncClient(broker.uri(), "shutting-down", new MemoryPersistence());
+        broker0.connect(new MqttConnectionOptions()).waitForCompletion(15_000);
+        AtomicBoolean dispatched = new AtomicBoolean();
+        broker0.setCallback(new MqttCallback() {
+            @Override
+            public void messageArrived(String t, MqttMessage m) {
+                dispatched.set(true);
+            }
+
+            @Override
+            public void disconnected(MqttDisconnectResponse response) {
+            }
+
+            @Override
+            public void mqttErrorOccurred(MqttException e) {
+            }
+
+            @Override
+            public void deliveryComplete(IMqttToken token) {
+            }
+
+            @Override
+            public void connectComplete(boolean reconnect, String uri) {
+            }
+
+            @Override
+            public void authPacketArrived(int reasonCode, MqttProperties properties) {
+            }
+        });
+        broker0.subscribe(new MqttSubscription(topic, 1)).waitForCompletion(15_000);
+        MqttProperties props = new MqttProperties();
+        props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, FabricKey.read(key).sign(topic, will))));
+        broker0.publish(topic, new MqttMessage(will, 1, false, props)).waitForCompletion(15_000);
+        // the broker dispatched it to its subscribers, a among them: a reads it before the broker's goodbye
+        await("the will dispatched").atMost(DEADLINE).untilTrue(dispatched);
+        broker0.disconnect().waitForCompletion(15_000);
+        broker0.close();
+        broker.restart();
+        int total = 200;
+        for (int i = 1; i <= total; i++) {
+            a.bus.deliver(new Moved("r1", i)); // while a reconnects: kept for b, not unhandled
+        }
+
+        await().atMost(DEADLINE).untilAsserted(() -> assertThat(r.got.size() + " received, backlog "
+                + a.statsOf("b").backlog() + ", b " + a.statusOf("b") + " at a")
+                .isEqualTo(total + " received, backlog 0, b online at a"));
+        assertThat(r.seqs()).isEqualTo(range(1, total));
         assertThat(a.bus.statistics(MOVED).unhandled).isZero();
     }
 
