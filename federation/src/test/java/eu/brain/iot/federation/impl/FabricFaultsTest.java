@@ -1,0 +1,133 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.CountDownLatch;
+import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.concurrent.TimeUnit;
+import java.util.stream.LongStream;
+
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+import eu.brain.iot.eventing.api.SmartBehaviour;
+import eu.brain.iot.federation.impl.Events.Moved;
+import eu.brain.iot.federation.impl.Events.Recorder;
+
+/**
+ * The faults beside the broker restart and the killed node ({@link FabricTest}): a partition between a node and the
+ * broker, healed; a remote behaviour that takes its time. Real brokers, real nodes in this JVM, as in FabricTest.
+ */
+class FabricFaultsTest extends FabricTestBase {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String MOVED = Moved.class.getName();
+
+    @Override
+    String logPrefix() {
+        return "fabric-faults";
+    }
+
+    private TestNode node(String name, String brokerUri) throws Exception {
+        TestNode n = new TestNode(name, Settings.of(brokerUri, "test", name, key, tmp.resolve("state-" + name))
+                .withResendTimeout(1000).withKeepAlive(2));
+        nodes.add(n);
+        n.start();
+        return n;
+    }
+
+    /**
+     * The publishing node loses the broker (every connection through the relay closed, new ones refused) while its
+     * behaviours publish; once the way is back, what it published meanwhile reaches the other node, once each, in
+     * order, and the node is seen online again.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aNodeCutOffFromTheBrokerLosesNothingOnceTheWayIsBack(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        try (TcpRelay relay = new TcpRelay(broker.port)) {
+            TestNode a = node("a", relay.uri());
+            TestNode b = node("b", broker.uri());
+            Recorder r = new Recorder();
+            b.addBehaviour(r, null, MOVED);
+            FabricTest.awaitInterest(a, b, 1);
+            int before = 100;
+            int during = 400;
+            for (int i = 1; i <= before; i++) {
+                a.bus.deliver(new Moved("r1", i));
+            }
+
+            relay.cut();
+            await("a offline at b (its Last Will)").atMost(DEADLINE).until(() -> b.statusOf("a").equals("offline"));
+            for (int i = before + 1; i <= before + during; i++) {
+                a.bus.deliver(new Moved("r1", i)); // kept on a: b is online as far as a knows
+            }
+            relay.heal();
+
+            int total = before + during;
+            await().atMost(DEADLINE).untilAsserted(() -> assertThat(r.got.size() + " received, backlog "
+                    + a.statsOf("b").backlog() + ", a " + b.statusOf("a") + " at b")
+                    .isEqualTo(total + " received, backlog 0, a online at b"));
+            assertThat(r.seqs()).as("every event once, in publish order").isEqualTo(range(total));
+            assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+        }
+    }
+
+    /**
+     * One node's behaviour does not return from {@code notify} for a while: the other node and the publisher's own
+     * behaviours get every event meanwhile, and the slow one gets them all afterwards, in order.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aSlowRemoteBehaviourHoldsUpNobodyElse(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a", broker.uri());
+        TestNode b = node("b", broker.uri());
+        TestNode c = node("c", broker.uri());
+        Slow slow = new Slow();
+        Recorder atC = new Recorder();
+        Recorder local = new Recorder();
+        b.addBehaviour(slow, null, MOVED);
+        c.addBehaviour(atC, null, MOVED);
+        a.addBehaviour(local, null, MOVED);
+        FabricTest.awaitInterest(a, b, 1);
+        FabricTest.awaitInterest(a, c, 1);
+
+        int total = 300;
+        for (int i = 1; i <= total; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        await("c and a's own behaviour served while b's is stuck").atMost(DEADLINE)
+                .until(() -> atC.got.size() == total && local.got.size() == total);
+        assertThat(slow.got).as("b's behaviour is still in its first notify").hasSizeLessThanOrEqualTo(1);
+        assertThat(atC.seqs()).isEqualTo(range(total));
+
+        slow.release.countDown();
+        await().atMost(DEADLINE).until(() -> slow.got.size() == total && a.statsOf("b").backlog() == 0);
+        assertThat(slow.got).isEqualTo(range(total));
+        assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+    }
+
+    /** A behaviour whose first {@code notify} does not return until the test releases it. */
+    public static final class Slow implements SmartBehaviour<Moved> {
+        final List<Long> got = new CopyOnWriteArrayList<>();
+        final CountDownLatch release = new CountDownLatch(1);
+
+        @Override
+        public void notify(Moved event) {
+            got.add(event.seq);
+            try {
+                release.await(2, TimeUnit.MINUTES);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }
+    }
+
+    static List<Long> range(int total) {
+        return LongStream.rangeClosed(1, total).boxed().toList();
+    }
+}
