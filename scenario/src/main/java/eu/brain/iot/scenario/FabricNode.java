@@ -62,8 +62,10 @@ final class FabricNode implements AutoCloseable {
      * @param configDir the node's configuration folder (Felix File Install)
      * @param httpPort  the port of its REST API (127.0.0.1)
      * @param log       where its output goes
+     * @param name      the node's name (framework property {@code fabric.node.name}: its edge names it on every
+     *                  command, its fabric membership uses it), or null for the node's default
      */
-    static FabricNode start(Path root, Path configDir, int httpPort, Path log) throws IOException {
+    static FabricNode start(Path root, Path configDir, int httpPort, Path log, String name) throws IOException {
         Path jar = root.resolve("node/target/fabric-node.jar");
         if (!Files.isRegularFile(jar)) {
             throw new IOException(jar + " is missing: build it (./warehouse-scenario does; or "
@@ -76,6 +78,9 @@ final class FabricNode implements AutoCloseable {
         // a state folder of the run's own: the node locks it, and a node the user runs from this checkout holds the
         // checkout's default one
         command.add("-Dfabric.node.state=" + configDir.toAbsolutePath().getParent().resolve("state"));
+        if (name != null) {
+            command.add("-Dfabric.node.name=" + name);
+        }
         command.add("-Dorg.osgi.service.http.port=" + httpPort);
         command.add("-Dorg.apache.felix.http.host=127.0.0.1");
         command.add("-jar");

@@ -12,6 +12,8 @@ import java.nio.file.StandardCopyOption;
 import java.util.Map;
 import java.util.TreeMap;
 
+import eu.brain.iot.federation.impl.FabricKey;
+
 /**
  * Writes the run's node configuration folder (what {@code -Dfelix.fileinstall.dir} points at): the files of
  * {@code node/config} (the Bundle Installer's repository and trusted key), with a journal of the run's own so that
@@ -21,6 +23,7 @@ import java.util.TreeMap;
 final class NodeSetup {
     static final String BIS_PID = "eu.brain.iot.bis";
     static final String EDGE_PID = "eu.brain.iot.edge";
+    static final String FEDERATION_PID = "eu.brain.iot.federation";
 
     private NodeSetup() {
     }
@@ -53,6 +56,9 @@ final class NodeSetup {
         for (Map.Entry<String, Map<String, Object>> pid : BehaviourSettings.forRun(o).entrySet()) {
             writeCfg(dir.resolve(pid.getKey() + ".cfg"), pid.getValue());
         }
+        if (o.fabric() != null) {
+            writeCfg(dir.resolve(FEDERATION_PID + ".cfg"), federation(o));
+        }
         for (Path extra : o.nodeConfigs()) {
             Files.copy(extra, dir.resolve(extra.getFileName()), StandardCopyOption.REPLACE_EXISTING);
         }
@@ -70,6 +76,27 @@ final class NodeSetup {
         // where the carts stand (GET /world, 2 s by default), at the same pace in warehouse time
         edge.put("world.period.ms", Math.max(o.pollPeriodMs(), Math.round(2_000 / o.speed())));
         return edge;
+    }
+
+    /**
+     * The node's membership in the fabric (PID eu.brain.iot.federation, federation/README.md): the broker, the
+     * fabric's name (the node's is the framework property the runner starts it with), the key (the one given, else a new one in the run's folder), a state folder of
+     * the run's own.
+     */
+    static Map<String, Object> federation(Options o) throws IOException {
+        Path key = o.fabric().key();
+        if (key == null) {
+            key = o.runDir().resolve("fabric.key");
+            if (!Files.exists(key)) {
+                FabricKey.generate(key);
+            }
+        }
+        Map<String, Object> fabric = new TreeMap<>();
+        fabric.put("broker.uri", o.fabric().broker());
+        fabric.put("fabric.name", Options.Fabric.NAME);
+        fabric.put("key.file", key.toString());
+        fabric.put("state.dir", o.runDir().resolve("federation").toString());
+        return fabric;
     }
 
     private static void writeCfg(Path file, Map<String, Object> properties) throws IOException {

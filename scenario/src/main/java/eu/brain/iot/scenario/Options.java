@@ -21,10 +21,24 @@ import java.util.List;
  * @param behaviours    false: the node gets no behaviour repository (nothing installs behaviours; to see the judge
  *                      fail)
  * @param nodeConfigs   extra configuration files copied into the node's configuration folder
+ * @param traffic       the robot behaviour's traffic planner drives the robots
+ * @param fabric        the fabric the node joins, or null: the node runs alone
  */
 record Options(Path root, Path map, Generate generate, long seed, double speed, long waitLimitMs, long deadlineMs,
                List<PlannedFault> faults, Path runDir, Path report, long progressMs, boolean behaviours,
-               List<Path> nodeConfigs, boolean traffic) {
+               List<Path> nodeConfigs, boolean traffic, Fabric fabric) {
+
+    /**
+     * The fabric of nodes the run's node joins through an MQTT 5 broker (federation/README.md).
+     *
+     * @param broker the broker's URI, {@code tcp://host:port} or {@code ssl://host:port}
+     * @param key    the fabric's signing key file, or null: a new key in the run's folder
+     */
+    record Fabric(String broker, Path key) {
+        /** The fabric's name and the run's node's name in it. */
+        static final String NAME = "warehouse";
+        static final String NODE = "node1";
+    }
 
     /** robot-sim's step: the paper's 0.5 s. */
     static final int STEP_MILLIS = 500;

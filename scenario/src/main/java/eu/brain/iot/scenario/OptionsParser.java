@@ -1,5 +1,7 @@
 package eu.brain.iot.scenario;
 
+import java.net.URI;
+import java.net.URISyntaxException;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.time.LocalDateTime;
@@ -83,6 +85,14 @@ final class OptionsParser {
         "the fleet's traffic planner drives the robots along reserved paths",
         "(the robot behaviour's traffic=true; behaviours/README.md, \"Traffic\")"})
     private boolean traffic;
+    @Option(names = "--broker", paramLabel = "URI", order = 15, description = {
+        "the node joins a fabric of nodes through this MQTT 5 broker, e.g. tcp://127.0.0.1:1883",
+        "(federation/README.md); without it the node runs alone"})
+    private String broker;
+    @Option(names = "--fabric-key", paramLabel = "FILE", order = 15, description = {
+        "the fabric's signing key, shared by its nodes (with --broker; default: a new key",
+        "in the run's folder)"})
+    private String fabricKey;
     @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
             description = "the run's folder (scenario/target/runs/<date-time>)")
     private String runDir;
@@ -187,13 +197,44 @@ final class OptionsParser {
             }
             nodeConfigs.add(p.toAbsolutePath());
         }
+        Options.Fabric fabric = fabric();
         Path runFolder = runDir != null ? Path.of(runDir).toAbsolutePath()
                 : rootDir.resolve("scenario/target/runs")
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
         long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
         return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
-                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), traffic);
+                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), traffic, fabric);
+    }
+
+    /** {@code --broker} and {@code --fabric-key}, checked: a URI a fabric node connects to, a readable key. */
+    private Options.Fabric fabric() throws UsageException {
+        if (broker == null) {
+            if (fabricKey != null) {
+                throw new UsageException("--fabric-key needs --broker (the key signs what the node sends through it)");
+            }
+            return null;
+        }
+        URI uri;
+        try {
+            uri = new URI(broker);
+        } catch (URISyntaxException e) {
+            uri = null;
+        }
+        if (uri == null || !("tcp".equals(uri.getScheme()) || "ssl".equals(uri.getScheme())) || uri.getHost() == null
+                || uri.getPort() < 1) {
+            throw new UsageException("--broker must be an MQTT broker's URI with its port, e.g. tcp://127.0.0.1:1883 "
+                    + "or ssl://broker.example:8883, found '" + broker + "'");
+        }
+        Path key = null;
+        if (fabricKey != null) {
+            key = Path.of(fabricKey).toAbsolutePath();
+            if (!Files.isRegularFile(key) || !Files.isReadable(key)) {
+                throw new UsageException("--fabric-key " + fabricKey + ": no such readable file (make one with "
+                        + "fabric:keygen in a node's shell, or leave the option out for a new key)");
+            }
+        }
+        return new Options.Fabric(broker, key);
     }
 
     private static int integer(String name, String text, int fallback, int min, int max) throws UsageException {

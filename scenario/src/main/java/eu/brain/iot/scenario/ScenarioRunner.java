@@ -55,7 +55,8 @@ final class ScenarioRunner {
                     map.doors().size(), options.seed(), options.speed(), sim.baseUri());
             int httpPort = NodeSetup.freePort();
             java.nio.file.Path configDir = NodeSetup.write(options, sim.baseUri());
-            FabricNode node = FabricNode.start(options.root(), configDir, httpPort, options.runDir().resolve("node.log"));
+            FabricNode node = FabricNode.start(options.root(), configDir, httpPort, options.runDir().resolve("node.log"),
+                    options.fabric() == null ? null : Options.Fabric.NODE);
             Thread hook = new Thread(() -> {
                 System.err.println("warehouse-scenario: stopped before the end; stopping the node and robot-sim");
                 node.stop();
@@ -185,6 +186,9 @@ final class ScenarioRunner {
                 out.println("scenario: could not read the bus statistics: " + e.getMessage());
             }
             extra.addAll(behavioursBack(faults));
+            if (options.fabric() != null) {
+                extra.add(joinedFabric(node));
+            }
         } else {
             extra.add(new Verdict.Check("the node ran until the end", false, "it ended during the run (exit code "
                     + node.exitCode() + "; its log: " + node.log() + ")"));
@@ -199,6 +203,23 @@ final class ScenarioRunner {
         Summary.print(out, run);
         out.println("report: " + options.report());
         return verdict.passed() ? 0 : 1;
+    }
+
+    /** With --broker: did the node join the fabric through it (its log says so), and if not, why not? */
+    private Verdict.Check joinedFabric(FabricNode node) throws InterruptedException {
+        String broker = options.fabric().broker();
+        String name = "the node joined the fabric through " + broker;
+        try {
+            String joined = "Fabric " + Options.Fabric.NAME + ": node " + Options.Fabric.NODE + " joined through "
+                    + broker;
+            if (Files.readString(node.log()).contains(joined)) {
+                return new Verdict.Check(name, true, Options.Fabric.NODE + " in fabric " + Options.Fabric.NAME);
+            }
+            return new Verdict.Check(name, false, String.join(" ", node.shell("fabric:nodes", Duration.ofSeconds(20)))
+                    + " (its log: " + node.log() + ")");
+        } catch (IOException e) {
+            return new Verdict.Check(name, false, "unknown: " + e.getMessage());
+        }
     }
 
     /** For each behaviour this run stopped: is it active again (brought back by the BMS)? */

@@ -7,7 +7,11 @@ import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Path;
+import java.util.Map;
 import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import eu.brain.iot.federation.impl.FabricKey;
 
 class OptionsParserTest {
 
@@ -66,6 +70,37 @@ class OptionsParserTest {
         assertThatThrownBy(() -> OptionsParser.parse("fast")).hasMessageStartingWith("unexpected argument 'fast'");
         assertThatThrownBy(() -> OptionsParser.parse("--node-config", "pom.xml"))
                 .hasMessageContaining("not a readable .cfg or .config file");
+    }
+
+    @Test
+    void aBrokerMakesTheNodeJoinAFabricAndItsConfigurationIsWritten(@TempDir Path dir) throws Exception {
+        assertThat(OptionsParser.parse().fabric()).as("alone by default").isNull();
+        Options o = OptionsParser.parse("--broker", "tcp://127.0.0.1:18830", "--run-dir", dir.toString());
+        assertThat(o.fabric()).isEqualTo(new Options.Fabric("tcp://127.0.0.1:18830", null));
+
+        Map<String, Object> cfg = NodeSetup.federation(o);
+        assertThat(cfg).containsEntry("broker.uri", "tcp://127.0.0.1:18830").containsEntry("fabric.name", "warehouse")
+                .containsEntry("key.file", dir.resolve("fabric.key").toString())
+                .containsEntry("state.dir", dir.resolve("federation").toString()).doesNotContainKey("node.name");
+        assertThat(dir.resolve("fabric.key")).as("a new key, read as a node reads it").isRegularFile();
+        assertThat(FabricKey.read(dir.resolve("fabric.key"))).isNotNull();
+
+        Options given = OptionsParser.parse("--broker", "ssl://broker.example:8883", "--fabric-key",
+                dir.resolve("fabric.key").toString());
+        assertThat(given.fabric().key()).isEqualTo(dir.resolve("fabric.key"));
+    }
+
+    @Test
+    void aBadBrokerOrKeySaysWhatIsWrong(@TempDir Path dir) {
+        assertThatThrownBy(() -> OptionsParser.parse("--broker", "127.0.0.1:1883")).hasMessage("--broker must be an "
+                + "MQTT broker's URI with its port, e.g. tcp://127.0.0.1:1883 or ssl://broker.example:8883, found "
+                + "'127.0.0.1:1883'");
+        assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1"))
+                .hasMessageStartingWith("--broker must be an MQTT broker's URI with its port");
+        assertThatThrownBy(() -> OptionsParser.parse("--fabric-key", "k")).hasMessage("--fabric-key needs --broker "
+                + "(the key signs what the node sends through it)");
+        assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1:1883", "--fabric-key",
+                dir.resolve("none").toString())).hasMessageContaining("no such readable file");
     }
 
     @Test

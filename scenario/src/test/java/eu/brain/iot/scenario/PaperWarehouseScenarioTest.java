@@ -5,6 +5,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import com.fasterxml.jackson.databind.JsonNode;
 import java.io.ByteArrayOutputStream;
 import java.io.PrintStream;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
@@ -12,6 +14,7 @@ import java.time.LocalDateTime;
 import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.List;
+import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.TestInfo;
 
@@ -100,6 +103,38 @@ class PaperWarehouseScenarioTest {
         // since it meets every robot idle in its dock
         assertThat(log).containsPattern("robot\\d taken over at \\(\\d+,\\d+\\): TO_(CART|STORAGE|DOCK)");
         assertInstalledOnDemand(run);
+    }
+
+    /**
+     * With --broker the node joins a fabric through a real broker (Mosquitto, started here on a free port of
+     * 127.0.0.1; skipped where its binary is missing) with a key of the run's own, and the warehouse completes as on
+     * a node alone; the judge says the node joined.
+     */
+    @Test
+    void aNodeInAFabricThroughMosquittoRunsThePapersWarehouse(TestInfo test) throws Exception {
+        Path mosquitto = Path.of("/usr/sbin/mosquitto");
+        Assumptions.assumeTrue(Files.isExecutable(mosquitto), "Mosquitto is not installed (apt-get install "
+                + "mosquitto): the run through a real broker is skipped");
+        Path run = runDir(test);
+        Files.createDirectories(run);
+        int port;
+        try (ServerSocket s = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            port = s.getLocalPort();
+        }
+        Path conf = run.resolve("mosquitto.conf");
+        Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\n");
+        Process broker = new ProcessBuilder(mosquitto.toString(), "-c", conf.toString()).redirectErrorStream(true)
+                .redirectOutput(run.resolve("mosquitto.log").toFile()).start();
+        try {
+            String text = runScenario(run, "--broker", "tcp://127.0.0.1:" + port);
+            assertThat(text).contains("PASS  the node joined the fabric through tcp://127.0.0.1:" + port,
+                    "PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
+                    "each commanded by one node only: node1");
+            assertThat(run.resolve("fabric.key")).as("a key of the run's own").isRegularFile();
+        } finally {
+            broker.destroy();
+            broker.waitFor();
+        }
     }
 
     /** The run's folder, kept after the test (not a temporary folder): its node.log tells why a run failed. */
