@@ -312,10 +312,18 @@ public final class FabricComponent implements Host, FabricMonitor {
         if (node == null) {
             return monitor.read(nodeName, fabricName, brokerUri, FabricStatus.NOT_JOINED, problem, List.of(), null);
         }
-        BundleInstaller local = node.installer() instanceof FabricInstaller f ? f.local() : null;
         return monitor.read(node.name(), node.settings().fabric(), node.settings().brokerUri(),
-                node.joined() ? FabricStatus.ONLINE : FabricStatus.JOINING, null, node.nodes(),
-                local == null ? null : local.installed().size());
+                node.joined() ? FabricStatus.ONLINE : FabricStatus.JOINING, null, node.nodes(), installed());
+    }
+
+    /** How many behaviours the node's own installer installed; {@code null} without one, or one going away. */
+    private Integer installed() {
+        BundleInstaller local = node.installer() instanceof FabricInstaller f ? f.local() : null;
+        try {
+            return local == null ? null : local.installed().size();
+        } catch (RuntimeException going) {
+            return null; // its bundle is stopping: the next reading goes without it
+        }
     }
 
     @Override
