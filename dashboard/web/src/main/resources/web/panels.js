@@ -1,7 +1,9 @@
-// The panels beside the drawing: counters, the last decisions, the device table and the fabric's tables.
+// The panels beside the drawing: counters, the last decisions, the device table and the fabric's tables (the nodes'
+// in nodes.js).
 // Each is rebuilt only when its part of the model changed; the device table shows the devices in trouble first
 // and at most ROWS of them, so that a fleet of a thousand robots costs the page no more than a few dozen rows.
 import { value } from './model.js';
+import { renderNodes } from './nodes.js';
 
 const ROWS = 60;
 const COUNTERS = {
@@ -89,6 +91,7 @@ function fill(tr, cells) {
 }
 
 function fabric(f) {
+  renderNodes(f.nodes);
   rows('behaviours', f.behaviours || [], b => row([b.symbolicName, b.version, b.state,
     new Date(b.installedAt).toLocaleTimeString(), b.reason || '']));
   rows('bms-history', [...(f.bmsHistory || [])].reverse(), h => row([new Date(h.time).toLocaleTimeString(), h.kind,

@@ -18,6 +18,7 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicy;
 import org.osgi.service.component.annotations.ReferencePolicyOption;
 import org.osgi.service.log.Logger;
 import org.osgi.service.log.LoggerFactory;
@@ -29,6 +30,7 @@ import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.PollMonitor;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
+import eu.brain.iot.federation.monitoring.api.FabricMonitor;
 
 /**
  * The dashboard's state and its event streams. Follows the edge's device model (its listener, never the bus's
@@ -71,6 +73,13 @@ public final class Hub {
     private boolean fabricChanged;
     private long nextReconcile;
     private final StreamLimit streamLimit;
+    /**
+     * The fabric's monitor while the node has a fabric configuration: dynamic, so that a node joining or leaving a
+     * fabric does not restart the dashboard (and close every page's stream). Set by SCR on any thread.
+     */
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    private volatile FabricMonitor fabricMonitor;
 
     @Activate
     public Hub(@Reference DeviceModel model,
@@ -87,7 +96,7 @@ public final class Hub {
         this.config = check(config);
         this.log = log;
         this.streamLimit = new StreamLimit(config.max_streams(), log);
-        this.fabric = new Fabric(bus, installer, bms, poll);
+        this.fabric = new Fabric(bus, installer, bms, poll, () -> fabricMonitor);
         this.activity = new Activity(config.decisions());
         this.devices = new Devices(activity);
         this.events = new EventLog(Long.toString(System.currentTimeMillis(), 36), config.replay_events());

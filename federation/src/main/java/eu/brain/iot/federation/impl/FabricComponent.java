@@ -41,6 +41,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.eventing.spi.RemoteEvents;
+import eu.brain.iot.federation.monitoring.api.FabricMonitor;
+import eu.brain.iot.federation.monitoring.api.FabricStatus;
 
 /**
  * A node's membership in a fabric, as a Declarative Services component: active only with its configuration (PID
@@ -48,16 +50,17 @@ import eu.brain.iot.eventing.spi.RemoteEvents;
  * types and filters, the whole whiteboard but the consumers of last resort) as its interest, registers the forwarders
  * the fabric asks for as {@link EventForwarder} services, and gives events from other nodes to the bus's
  * {@link RemoteEvents}. While the node has its own {@link BundleInstaller}, it registers the fabric's one
- * ({@link FabricInstaller}, ranked higher), through which the node's BMS asks the fabric which node installs.
+ * ({@link FabricInstaller}, ranked higher), through which the node's BMS asks the fabric which node installs. It is
+ * the node's {@link FabricMonitor} too (this node, its connection and every other node it knows; see {@link Monitor}).
  * <p>
  * A node without a usable key or state folder does not join: the component stays active with no fabric node and says
- * why (log, {@code fabric:nodes}). Threads: SCR's (activation), the framework's service events (the tracker, which
+ * why (log, {@code fabric:nodes}, {@link FabricMonitor}). Threads: SCR's (activation), the framework's service events (the tracker, which
  * hands the interest to the fabric node's own thread), and the fabric node's (see {@link FabricNode}).
  */
-@Component(service = FabricComponent.class, configurationPid = FabricConfig.PID,
+@Component(service = { FabricComponent.class, FabricMonitor.class }, configurationPid = FabricConfig.PID,
         configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)
 @Designate(ocd = FabricConfig.class)
-public final class FabricComponent implements Host {
+public final class FabricComponent implements Host, FabricMonitor {
 
     /** Framework property naming the node when the configuration does not. */
     public static final String NODE_NAME_PROPERTY = "fabric.node.name";
@@ -73,6 +76,11 @@ public final class FabricComponent implements Host {
     private final Logger log;
     private final FabricNode node;
     private final String problem;
+    /** This node's name, fabric and broker as configured: what the monitor says of a node that does not join. */
+    private final String nodeName;
+    private final String fabricName;
+    private final String brokerUri;
+    private final Monitor monitor = new Monitor(System::currentTimeMillis);
     private final ServiceTracker<Object, InterestEntry> behaviours;
     /** Whether the node was started (once): by SCR's thread, or the framework's event thread once started. */
     private final AtomicBoolean joining = new AtomicBoolean();
@@ -103,6 +111,9 @@ public final class FabricComponent implements Host {
         }
         this.node = joined;
         this.problem = why;
+        this.nodeName = nodeName(config, context);
+        this.fabricName = config.fabric_name();
+        this.brokerUri = config.broker_uri();
         Filter filter = FrameworkUtil.createFilter("(&(|(objectClass=" + SmartBehaviour.class.getName()
                 + ")(objectClass=" + UntypedSmartBehaviour.class.getName() + "))("
                 + SmartBehaviourNamespace.CONSUMED_PROPERTY + "=*))");
@@ -135,13 +146,7 @@ public final class FabricComponent implements Host {
     }
 
     static Settings settings(FabricConfig config, BundleContext context) {
-        String name = config.node_name();
-        if (name.isBlank()) {
-            name = context.getProperty(NODE_NAME_PROPERTY);
-        }
-        if (name == null || name.isBlank()) {
-            name = hostName();
-        }
+        String name = nodeName(config, context);
         if (config.key_file().isBlank()) {
             throw new IllegalArgumentException("no signing key is configured (key.file in PID " + FabricConfig.PID
                     + "): create one with 'fabric:keygen FILE', copy it to every node, and set key.file");
@@ -158,6 +163,15 @@ public final class FabricComponent implements Host {
                 stateDir, config.keep_alive_s(), config.session_expiry_s(), config.resend_timeout_ms(),
                 config.max_pending(), config.max_age_ms(), config.batch_max_events(), config.install_bid_ms(),
                 config.install_timeout_ms());
+    }
+
+    /** The configured name, else the framework property {@value #NODE_NAME_PROPERTY}, else the host name. */
+    private static String nodeName(FabricConfig config, BundleContext context) {
+        String name = config.node_name();
+        if (name.isBlank()) {
+            name = context.getProperty(NODE_NAME_PROPERTY);
+        }
+        return name == null || name.isBlank() ? hostName() : name;
     }
 
     private static String hostName() {
@@ -291,6 +305,25 @@ public final class FabricComponent implements Host {
     /** @return why this node did not join, or {@code null} */
     String problem() {
         return problem;
+    }
+
+    @Override
+    public FabricStatus status() {
+        if (node == null) {
+            return monitor.read(nodeName, fabricName, brokerUri, FabricStatus.NOT_JOINED, problem, List.of(), null);
+        }
+        return monitor.read(node.name(), node.settings().fabric(), node.settings().brokerUri(),
+                node.joined() ? FabricStatus.ONLINE : FabricStatus.JOINING, null, node.nodes(), installed());
+    }
+
+    /** How many behaviours the node's own installer installed; {@code null} without one, or one going away. */
+    private Integer installed() {
+        BundleInstaller local = node.installer() instanceof FabricInstaller f ? f.local() : null;
+        try {
+            return local == null ? null : local.installed().size();
+        } catch (RuntimeException going) {
+            return null; // its bundle is stopping: the next reading goes without it
+        }
     }
 
     @Override

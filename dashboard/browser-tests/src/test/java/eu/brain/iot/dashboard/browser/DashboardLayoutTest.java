@@ -17,8 +17,8 @@ import eu.brain.iot.robotsim.SimConfig;
 /**
  * The page's layout in a 1,400 px wide headless Chromium, with a behaviour installed on demand (whose "why" is a
  * long sentence) and the bus's event types listed: nothing makes the page wider than the window, every column's
- * header is aligned as its cells are, and the page declares its icon. A screenshot is saved under
- * target/screenshots/layout-1400.png.
+ * header is aligned as its cells are, the page declares its icon, and (the node has no fabric) shows no Nodes panel.
+ * A screenshot is saved under target/screenshots/layout-1400.png.
  */
 class DashboardLayoutTest {
 
@@ -63,6 +63,9 @@ class DashboardLayoutTest {
                         + "       out.push(id + ' ' + th.textContent); }); }"
                         + " return out;");
                 assertThat(misaligned).as("headers aligned as their cells").isEmpty();
+
+                assertThat((Boolean) page.script("return document.getElementById('nodes-panel').hidden;"))
+                        .as("a node without a fabric shows no Nodes panel").isTrue();
 
                 assertThat((String) page.script("const l = document.querySelector('link[rel=icon]');"
                         + " return l ? l.href : null;")).endsWith("/dashboard/favicon.svg");

@@ -78,6 +78,18 @@ final class Node implements AutoCloseable {
         return this;
     }
 
+    /**
+     * The node joins a fabric (the federation's configuration, PID {@code eu.brain.iot.federation}): its name, the
+     * broker, the fabric's key file, a state folder in its home, and a keep-alive of {@code keepAliveSeconds} (a node
+     * killed is declared offline by its Last Will within 1.5 of them).
+     */
+    Node withFabric(URI broker, String fabric, String name, Path keyFile, int keepAliveSeconds) throws IOException {
+        Files.writeString(home.resolve("config").resolve("eu.brain.iot.federation.cfg"), "broker.uri=" + broker
+                + "\nfabric.name=" + fabric + "\nnode.name=" + name + "\nkey.file=" + keyFile + "\nstate.dir="
+                + home.resolve("federation") + "\nkeep.alive.s=" + keepAliveSeconds + "\n");
+        return this;
+    }
+
     /** The node will read Gogo commands from {@link #type} (else it runs without a shell). */
     Node withShell() {
         shell = true;
@@ -118,6 +130,11 @@ final class Node implements AutoCloseable {
         if (!process.waitFor(30, TimeUnit.SECONDS)) {
             process.destroyForcibly().waitFor(10, TimeUnit.SECONDS);
         }
+    }
+
+    /** Kills the node as {@code kill -9 <pid>} does (nothing said to anyone), and waits for its JVM to end. */
+    void kill() throws InterruptedException {
+        process.destroyForcibly().waitFor(30, TimeUnit.SECONDS);
     }
 
     /** POSTs a JSON body to a path of the node, returns the answer's body. */
