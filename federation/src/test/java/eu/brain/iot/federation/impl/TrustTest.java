@@ -32,54 +32,44 @@ import eu.brain.iot.federation.impl.Events.Recorder;
  * a sequence number it took already), sent by a client of the same broker that is not a member of the fabric; and a
  * node without the fabric's key does not join.
  */
-class TrustTest {
+class TrustTest extends FabricTestBase {
 
     static final Duration DEADLINE = Duration.ofSeconds(60);
     static final String MOVED = Moved.class.getName();
 
-    @TempDir
-    Path tmp;
-    Broker broker;
-    Path key;
     TestNode a;
     TestNode b;
     MqttAsyncClient attacker;
 
+    @Override
+    String logPrefix() {
+        return "trust-test";
+    }
+
     @AfterEach
-    void tearDown() throws Exception {
+    void closeAttacker() throws Exception {
         if (attacker != null) {
             attacker.disconnectForcibly(0, 1, false);
             attacker.close(true);
-        }
-        for (TestNode n : new TestNode[] { a, b }) {
-            if (n != null) {
-                n.close();
-            }
-        }
-        if (broker != null) {
-            broker.close();
         }
     }
 
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
     void unsignedWronglySignedAndReplayedEventsAreRefused(Broker.Kind kind) throws Exception {
-        if (kind == Broker.Kind.MOSQUITTO) {
-            Assumptions.assumeTrue(Files.isExecutable(Broker.MOSQUITTO), "Mosquitto is not installed ("
-                    + Broker.MOSQUITTO + " missing: apt-get install mosquitto); the Mosquitto variant is skipped");
-        }
-        broker = Broker.of(kind, tmp.resolve("broker"));
-        key = tmp.resolve("fabric.key");
-        FabricKey.generate(key);
+        startBroker(kind);
         a = new TestNode("a", settings("a"));
+        nodes.add(a);
         a.start();
         Recorder r = new Recorder();
         b = new TestNode("b", settings("b"));
+        nodes.add(b);
         b.addBehaviour(r, null, MOVED);
         b.start();
         FabricTest.awaitInterest(a, b, 1);
         a.bus.deliver(new Moved("r1", 1));
-        await().atMost(DEADLINE).until(() -> r.got.size() == 1 && a.statsOf("b").backlog() == 0);
+        await().atMost(DEADLINE).untilAsserted(() -> assertThat(r.got.size() + " received, backlog "
+                + a.statsOf("b").backlog()).isEqualTo("1 received, backlog 0"));
 
         String epoch = Files.readAllLines(tmp.resolve("state-a/outbox/b.journal"), StandardCharsets.US_ASCII).get(0)
                 .substring("EPOCH ".length());
@@ -139,10 +129,5 @@ class TrustTest {
             props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, signature)));
         }
         attacker.publish(topic, new MqttMessage(payload, 1, false, props)).waitForCompletion(15_000);
-    }
-
-    private Settings settings(String name) {
-        return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)
-                .withKeepAlive(2);
     }
 }

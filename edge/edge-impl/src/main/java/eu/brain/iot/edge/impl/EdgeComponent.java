@@ -165,6 +165,16 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     }
 
     @Override
+    public Set<String> share() {
+        return edge.ownership().share();
+    }
+
+    @Override
+    public Set<String> fleet() {
+        return edge.ownership().fleet();
+    }
+
+    @Override
     public boolean owns(String deviceId) {
         return edge.ownership().owns(deviceId);
     }

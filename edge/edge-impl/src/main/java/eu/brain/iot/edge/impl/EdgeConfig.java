@@ -52,4 +52,9 @@ import org.osgi.service.metatype.annotations.ObjectClassDefinition;
 
     @AttributeDefinition(description = "With share K/N: the node number (1..N) that owns the doors")
     int doors_owner() default 1;
+
+    @AttributeDefinition(description = "The share is this node's only once a lease manager takes it (PID "
+            + "eu.brain.iot.federation.lease): a node of a fabric first hears which node holds what, so that a node "
+            + "started again does not command robots another node took over meanwhile")
+    boolean share_leased() default false;
 }

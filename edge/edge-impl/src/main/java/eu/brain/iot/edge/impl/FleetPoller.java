@@ -232,7 +232,7 @@ final class FleetPoller implements AutoCloseable, PollResult.Handler<PolledDevic
     }
 
     private String notOwned() {
-        return "not owned by node " + ownership.nodeName() + " (its share " + ownership.share()
+        return "not owned by node " + ownership.nodeName() + " (its share " + ownership.shareRule()
                 + ", less what it released, plus what it took)";
     }
 

@@ -47,7 +47,7 @@ record FleetSettings(URI baseUrl, List<String> robots, List<String> doors, long 
     static FleetSettings from(EdgeConfig c, String url) {
         FleetSettings s = of(url, List.of(c.robots()), List.of(c.doors()), c.poll_period_ms(), c.request_timeout_ms(),
                 c.max_connections(), c.io_threads(), c.unreachable_after_failures(), c.backoff_max_ms());
-        return s.withWorldPeriod(c.world_period_ms()).withShare(Share.parse(c.share(), c.doors_owner()));
+        return s.withWorldPeriod(c.world_period_ms()).withShare(Share.parse(c.share(), c.doors_owner()).withLeased(c.share_leased()));
     }
 
     /** The same settings with this share of the fleet. */

@@ -49,7 +49,8 @@ final class Ownership implements DeviceOwnership {
         }
     }
 
-    synchronized Share share() {
+    /** The configured share's rule. */
+    synchronized Share shareRule() {
         return share;
     }
 
@@ -60,7 +61,7 @@ final class Ownership implements DeviceOwnership {
 
     /** Whether this node owns the device of this kind. */
     synchronized boolean owns(String id, DeviceKind kind) {
-        return taken.contains(id) || !released.contains(id) && share.holds(id, kind);
+        return taken.contains(id) || !share.leased() && !released.contains(id) && share.holds(id, kind);
     }
 
     /** Of these devices of the fleet, the ones this node owns, in their order. */
@@ -82,6 +83,22 @@ final class Ownership implements DeviceOwnership {
     @Override
     public synchronized Set<String> owned() {
         return Collections.unmodifiableSet(new TreeSet<>(ownedOf(fleet).keySet()));
+    }
+
+    @Override
+    public synchronized Set<String> share() {
+        Set<String> mine = new TreeSet<>();
+        fleet.forEach((id, kind) -> {
+            if (share.holds(id, kind)) {
+                mine.add(id);
+            }
+        });
+        return Collections.unmodifiableSet(mine);
+    }
+
+    @Override
+    public synchronized Set<String> fleet() {
+        return Collections.unmodifiableSet(new TreeSet<>(fleet.keySet()));
     }
 
     @Override

@@ -16,8 +16,10 @@ import java.util.regex.Pattern;
  * @param nodes      N, the number of nodes in {@code K/N}, 0 otherwise
  * @param doorsOwner the node number (1..N) that owns the doors under {@code K/N}
  * @param ids        the listed ids under {@link Mode#LIST}, empty otherwise
+ * @param leased     the share is this node's only once a lease manager takes it (a node of a fabric with device
+ *                   leases first hears who holds what: its share may be held by another node)
  */
-record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids) {
+record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids, boolean leased) {
 
     /** How the devices are shared. */
     enum Mode {
@@ -31,7 +33,7 @@ record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids) {
 
     /** The value that means every device. */
     static final String ALL = "all";
-    static final Share EVERY_DEVICE = new Share(Mode.ALL, 0, 0, 1, Set.of());
+    static final Share EVERY_DEVICE = new Share(Mode.ALL, 0, 0, 1, Set.of(), false);
 
     private static final Pattern MODULO_SHARE = Pattern.compile("(\\d{1,6})/(\\d{1,6})");
     private static final Pattern NUMBERED_ROBOT = Pattern.compile("robot0*(\\d{1,9})");
@@ -63,7 +65,7 @@ record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids) {
                 throw new IllegalArgumentException("doors.owner must be a node number from 1 to " + n
                         + " (share " + s + "), found " + doorsOwner);
             }
-            return new Share(Mode.MODULO, k, n, doorsOwner, Set.of());
+            return new Share(Mode.MODULO, k, n, doorsOwner, Set.of(), false);
         }
         Set<String> ids = new LinkedHashSet<>();
         for (String part : s.split(",")) {
@@ -74,7 +76,12 @@ record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids) {
             }
             ids.add(id);
         }
-        return new Share(Mode.LIST, 0, 0, doorsOwner, ids);
+        return new Share(Mode.LIST, 0, 0, doorsOwner, ids, false);
+    }
+
+    /** The same share, owned only once a lease manager takes it when {@code leased}. */
+    Share withLeased(boolean leased) {
+        return new Share(mode, node, nodes, doorsOwner, ids, leased);
     }
 
     /** Whether the share holds this device of the fleet. */
@@ -98,6 +105,6 @@ record Share(Mode mode, int node, int nodes, int doorsOwner, Set<String> ids) {
             case ALL -> ALL;
             case MODULO -> node + "/" + nodes + " (doors on node " + doorsOwner + ")";
             case LIST -> String.join(",", ids);
-        };
+        } + (leased ? ", once leased" : "");
     }
 }

@@ -165,4 +165,21 @@ class OwnershipTest {
                 .hasMessageContaining("'robot 1' is no device id");
         assertThatThrownBy(() -> edge.ownership().release(null)).isInstanceOf(IllegalArgumentException.class);
     }
+
+    @Test
+    void aLeasedShareIsOwnedOnlyOnceTakenAndSaidAsTheShare() throws Exception {
+        awaitProviders("door1", "robot2");
+        edge.configure(FleetSettings.of(sim.baseUri().toString(), List.of(), List.of(), 100, 1000, 8, 1, 2, 400)
+                .withShare(Share.parse("1/2", 1).withLeased(true)));
+        await("the share leaves the model until it is leased").atMost(DEADLINE)
+                .until(() -> edge.providers().stream().noneMatch(p -> p.id().startsWith("robot")));
+        assertThat(edge.ownership().owned()).isEmpty();
+        assertThat(edge.ownership().share()).containsExactly("door1", "robot2");
+        assertThat(edge.ownership().fleet()).containsExactly("door1", "robot1", "robot2", "robot3");
+        assertThat(goTo("robot2", 5, 3).accepted).as("not owned: not commanded").isFalse();
+
+        edge.ownership().take(Set.of("robot2", "door1"));
+        awaitProviders("door1", "robot2");
+        assertThat(Share.parse("1/2", 1).withLeased(true)).hasToString("1/2 (doors on node 1), once leased");
+    }
 }

@@ -25,6 +25,15 @@ public interface DeviceOwnership {
      */
     Set<String> owned();
 
+    /**
+     * @return the ids of the fleet's devices this node's configuration gives it (its share), whatever was taken or
+     *         released since; empty until the fleet answered. Since 1.3.
+     */
+    Set<String> share();
+
+    /** @return the ids of every device of the fleet, owned or not; empty until the fleet answered. Since 1.3. */
+    Set<String> fleet();
+
     /** @return whether this node owns the device (taken or in its share, and not released) */
     boolean owns(String deviceId);
 

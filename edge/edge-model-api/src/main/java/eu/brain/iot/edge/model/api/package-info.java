@@ -11,7 +11,7 @@
  * ({@link eu.brain.iot.edge.model.api.DeviceOwnership}).
  */
 @Export
-@Version("1.2.0")
+@Version("1.3.0")
 package eu.brain.iot.edge.model.api;
 
 import org.osgi.annotation.bundle.Export;

@@ -1,0 +1,113 @@
+package eu.brain.iot.federation.impl;
+
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
+import java.util.TreeMap;
+import java.util.TreeSet;
+
+/**
+ * Which node owns which device of the fleet, decided by every node from the leases it hears, the same way on every
+ * node (the policy; {@link LeaseManager} applies it):
+ * <ul>
+ * <li>a device belongs to the alive node whose share holds it (the lowest name if several), else to the alive node
+ * at {@code floorMod(id.hashCode(), alive)} in name order (this node counting as alive);</li>
+ * <li>a node releases a device that belongs to another node, or that an alive node of a lower name also owns;</li>
+ * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
+ * device, or its expiry, comes first, so that no device is commanded by two nodes at once;</li>
+ * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
+ * and started again finds its share held by others);</li>
+ * <li>a node is alive while its last lease is younger than the lease period.</li>
+ * </ul>
+ * Time is {@link System#nanoTime()} as passed in. Threads: one owner thread (the lease manager's), no locking.
+ */
+final class LeaseTable {
+
+    /** A node's lease as heard: its share, what it owns, when it was heard and for how long it holds. */
+    record Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos) {
+        boolean alive(long now) {
+            return now - heardNanos <= leaseNanos;
+        }
+    }
+
+    /** What this node does now. */
+    record Plan(Set<String> take, Set<String> release) {
+        boolean empty() {
+            return take.isEmpty() && release.isEmpty();
+        }
+    }
+
+    private final String self;
+    private final long leaseNanos;
+    private final long startedNanos;
+    private final Map<String, Lease> heard = new TreeMap<>();
+
+    LeaseTable(String self, long leaseNanos, long startedNanos) {
+        this.self = self;
+        this.leaseNanos = leaseNanos;
+        this.startedNanos = startedNanos;
+    }
+
+    /** Another node's lease; this node's own is ignored. */
+    void heard(Lease lease) {
+        if (!lease.node().equals(self)) {
+            heard.put(lease.node(), lease);
+        }
+    }
+
+    /** @return the other nodes whose lease holds now, by name */
+    List<Lease> alive(long now) {
+        return heard.values().stream().filter(l -> l.alive(now)).toList();
+    }
+
+    /** @return the nodes heard whose lease lapsed, by name */
+    List<String> lapsed(long now) {
+        return heard.values().stream().filter(l -> !l.alive(now)).map(Lease::node).toList();
+    }
+
+    /**
+     * @param fleet   every device of the fleet
+     * @param share   the devices this node's configuration gives it
+     * @param owned   the devices this node owns now
+     */
+    Plan plan(long now, Set<String> fleet, Set<String> share, Set<String> owned) {
+        List<Lease> alive = alive(now);
+        Set<String> release = new TreeSet<>();
+        for (String d : owned) {
+            boolean lowerHolds = alive.stream().anyMatch(l -> l.node().compareTo(self) < 0 && l.owned().contains(d));
+            if (lowerHolds || !self.equals(owner(d, share, alive))) {
+                release.add(d);
+            }
+        }
+        Set<String> take = new TreeSet<>();
+        if (now - startedNanos > leaseNanos) {
+            for (String d : fleet) {
+                if (!owned.contains(d) && self.equals(owner(d, share, alive))
+                        && alive.stream().noneMatch(l -> l.owned().contains(d))) {
+                    take.add(d);
+                }
+            }
+        }
+        return new Plan(take, release);
+    }
+
+    /** The node a device belongs to now. */
+    String owner(String device, Set<String> share, List<Lease> alive) {
+        if (share.contains(device)) {
+            String lower = alive.stream().filter(l -> l.share().contains(device)).map(Lease::node)
+                    .filter(n -> n.compareTo(self) < 0).findFirst().orElse(null);
+            return lower != null ? lower : self;
+        }
+        String sharer = alive.stream().filter(l -> l.share().contains(device)).map(Lease::node).findFirst()
+                .orElse(null);
+        if (sharer != null) {
+            return sharer;
+        }
+        List<String> names = new ArrayList<>();
+        names.add(self);
+        alive.forEach(l -> names.add(l.node()));
+        names.sort(null);
+        return names.get(Math.floorMod(device.hashCode(), names.size()));
+    }
+}

@@ -1,0 +1,97 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.util.List;
+import java.util.Set;
+import java.util.TreeSet;
+
+import org.junit.jupiter.api.Test;
+
+/** The device lease policy on its own: who owns what, and when a device may move without two owners at once. */
+class LeaseTableTest {
+
+    static final long LEASE = 2_000;
+    static final Set<String> FLEET = Set.of("robot1", "robot2", "robot3", "robot4", "door1");
+    static final Set<String> SHARE1 = Set.of("robot1", "robot3", "door1");
+    static final Set<String> SHARE2 = Set.of("robot2", "robot4");
+
+    static LeaseTable.Lease lease(String node, Set<String> share, Set<String> owned, long at) {
+        return new LeaseTable.Lease(node, share, owned, at, LEASE);
+    }
+
+    @Test
+    void aNodeJustStartedTakesNothingForOneLeasePeriodThenItsShare() {
+        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        assertThat(t.plan(LEASE, FLEET, SHARE1, Set.of()).take()).as("still listening").isEmpty();
+        t.heard(lease("node2", SHARE2, SHARE2, LEASE));
+        LeaseTable.Plan plan = t.plan(LEASE + 1, FLEET, SHARE1, Set.of());
+        assertThat(plan.take()).containsExactlyInAnyOrderElementsOf(SHARE1);
+        assertThat(plan.release()).isEmpty();
+    }
+
+    @Test
+    void theDevicesOfANodeWhoseLeaseLapsedGoToTheNodesAliveTheSameWayOnEach() {
+        long now = 10 * LEASE;
+        // three nodes; node3 shares nothing of the fleet here, node2 dies
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0);
+        LeaseTable at3 = new LeaseTable("node3", LEASE, 0);
+        at1.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at1.heard(lease("node3", Set.of(), Set.of(), now));
+        at3.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at3.heard(lease("node1", SHARE1, SHARE1, now));
+        assertThat(at1.lapsed(now)).containsExactly("node2");
+
+        Set<String> taken1 = at1.plan(now, FLEET, SHARE1, SHARE1).take();
+        Set<String> taken3 = at3.plan(now, FLEET, Set.of(), Set.of()).take();
+        Set<String> all = new TreeSet<>(taken1);
+        all.addAll(taken3);
+        assertThat(all).as("every device of node2, once").containsExactlyInAnyOrderElementsOf(SHARE2);
+        assertThat(taken1.size() + taken3.size()).as("none taken twice").isEqualTo(SHARE2.size());
+        for (String d : SHARE2) {
+            assertThat(at1.owner(d, SHARE1, at1.alive(now))).as(d).isEqualTo(at3.owner(d, Set.of(), at3.alive(now)));
+        }
+    }
+
+    @Test
+    void whileTheHoldersLeaseStillListsADeviceItIsNotTaken() {
+        long now = 10 * LEASE;
+        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        // node2 holds node1's robot3 (taken while node1 was away) and has not let it go yet
+        t.heard(lease("node2", SHARE2, Set.of("robot2", "robot4", "robot3"), now));
+        LeaseTable.Plan plan = t.plan(now, FLEET, SHARE1, Set.of());
+        assertThat(plan.take()).containsExactlyInAnyOrder("robot1", "door1");
+
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0);
+        at2.heard(lease("node1", SHARE1, Set.of("robot1", "door1"), now));
+        assertThat(at2.plan(now, FLEET, SHARE2, Set.of("robot2", "robot4", "robot3")).release())
+                .as("robot3 belongs to node1, alive again").containsExactly("robot3");
+
+        t.heard(lease("node2", SHARE2, SHARE2, now + 1)); // its next lease, without robot3
+        assertThat(t.plan(now + 1, FLEET, SHARE1, Set.of("robot1", "door1")).take()).containsExactly("robot3");
+    }
+
+    @Test
+    void twoNodesOwningOneDeviceLeaveItToTheLowerName() {
+        long now = 10 * LEASE;
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0);
+        at2.heard(lease("node1", SHARE1, Set.of("robot1", "robot3", "door1", "robot4"), now));
+        // robot4 is node2's share, but node1 holds it as well (both took it in one renewal)
+        assertThat(at2.plan(now, FLEET, SHARE2, SHARE2).release()).containsExactly("robot4");
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0);
+        at1.heard(lease("node2", SHARE2, SHARE2, now));
+        assertThat(at1.plan(now, FLEET, SHARE1, Set.of("robot1", "robot3", "door1", "robot4")).release())
+                .as("and node1 lets it go to its sharer").containsExactly("robot4");
+    }
+
+    @Test
+    void ownLeasesAreNotHeardAndANodeAloneOwnsTheWholeFleetOnceItsShareHoldersAreGone() {
+        long now = 10 * LEASE;
+        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        t.heard(lease("node1", SHARE1, FLEET, now));
+        assertThat(t.alive(now)).isEmpty();
+        t.heard(lease("node2", SHARE2, SHARE2, 0));
+        assertThat(t.plan(now, FLEET, SHARE1, SHARE1).take()).containsExactlyInAnyOrder("robot2", "robot4");
+        assertThat(List.copyOf(t.lapsed(now))).containsExactly("node2");
+    }
+}
