@@ -61,11 +61,14 @@ class FabricTest extends FabricTestBase {
         return n;
     }
 
-    /** Wait until {@code on} routes to {@code remote}'s current interest. */
+    /**
+     * Wait until {@code on} routes to {@code remote}'s current interest: it sees it online with these entries, and
+     * the forwarders are on its bus (added just after the status is noted).
+     */
     static void awaitInterest(TestNode on, TestNode remote, int entries) {
         await("interest of " + remote.name + " seen by " + on.name).atMost(DEADLINE).until(() -> on.fabric.nodes()
                 .stream().anyMatch(v -> v.node().equals(remote.name) && v.status().equals("online")
-                        && v.interest().size() == entries));
+                        && v.interest().size() == entries) && on.forwardersTo(remote.name) == entries);
     }
 
     @ParameterizedTest

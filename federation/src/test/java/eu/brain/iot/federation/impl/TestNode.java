@@ -28,6 +28,7 @@ final class TestNode implements Host, AutoCloseable {
     FabricNode fabric;
     final List<String> log = new CopyOnWriteArrayList<>();
     private final Map<Long, InterestEntry> behaviours = new ConcurrentHashMap<>();
+    private final Map<String, Integer> forwarders = new ConcurrentHashMap<>();
 
     /** A node not started yet: behaviours added now are there before the node joins. */
     TestNode(String name, Settings settings) throws Exception {
@@ -76,7 +77,16 @@ final class TestNode implements Host, AutoCloseable {
     @Override
     public AutoCloseable addForwarder(String destination, InterestEntry entry, EventForwarder forwarder) {
         long id = bus.addForwarder(forwarder, destination, entry.filter(), entry.types().toArray(String[]::new));
-        return () -> bus.removeBehaviour(id);
+        forwarders.merge(destination, 1, Integer::sum);
+        return () -> {
+            bus.removeBehaviour(id);
+            forwarders.merge(destination, -1, Integer::sum);
+        };
+    }
+
+    /** @return the forwarders on this node's bus to {@code destination} now: what routes events there */
+    int forwardersTo(String destination) {
+        return forwarders.getOrDefault(destination, 0);
     }
 
     @Override
