@@ -18,12 +18,17 @@ import org.osgi.util.tracker.ServiceTracker;
  * forwarder for another node's behaviour, or a behaviour of this node), paced at the configured rate or back to
  * back. Prints {@code probe publisher: run=R consumer known} then
  * {@code probe publisher: run=R published=N startNs=T} (T: {@code System.nanoTime()} before the first event).
+ * With {@code consumer.timeout.s=0} it publishes at once, whether a consumer is known or not, and prints only the
+ * second line: an event nobody takes yet is then the node's Behaviour Management Service's to hold and to have a
+ * behaviour installed for, on this node or another (the benchmark's remote install on demand).
  *
  * <p>Threads: one publishing thread per activation, started and stopped (interrupted, joined) by SCR's thread.
  */
 @Component(configurationPid = ProbePublisherConfig.PID, configurationPolicy = ConfigurationPolicy.REQUIRE,
         service = {})
 public final class ProbePublisher {
+    /** {@code consumer.timeout.s} that publishes at once, without waiting for a consumer. */
+    static final int PUBLISH_AT_ONCE = 0;
     private static final String CONSUMED = "eu.brain.iot.behaviour.consumed";
 
     private final Thread thread;
@@ -37,19 +42,11 @@ public final class ProbePublisher {
     private static void publish(EventBus bus, ProbePublisherConfig config, BundleContext context) {
         String run = config.run();
         try {
-            Filter consumers = context.createFilter("(" + CONSUMED + "=" + ProbeEvent.class.getName() + ")");
-            ServiceTracker<Object, Object> tracker = new ServiceTracker<>(context, consumers, null);
-            tracker.open(true);
-            try {
-                if (tracker.waitForService(TimeUnit.SECONDS.toMillis(config.consumer_timeout_s())) == null) {
-                    System.out.println("probe publisher: run=" + run + " no consumer of probe events within "
-                            + config.consumer_timeout_s() + " s; nothing published");
-                    return;
-                }
-            } finally {
-                tracker.close();
+            if (config.consumer_timeout_s() != PUBLISH_AT_ONCE && !awaitConsumer(config, context)) {
+                System.out.println("probe publisher: run=" + run + " no consumer of probe events within "
+                        + config.consumer_timeout_s() + " s; nothing published");
+                return;
             }
-            System.out.println("probe publisher: run=" + run + " consumer known");
             boolean paced = config.rate() > 0;
             long interval = paced ? TimeUnit.SECONDS.toNanos(1) / config.rate() : 0;
             long start = System.nanoTime();
@@ -71,11 +68,31 @@ public final class ProbePublisher {
                 next += interval;
             }
             System.out.println("probe publisher: run=" + run + " published=" + config.count() + " startNs=" + start);
-        } catch (InvalidSyntaxException e) {
-            throw new IllegalStateException(e);
         } catch (InterruptedException e) {
             System.out.println("probe publisher: run=" + run + " stopped while waiting for a consumer");
         }
+    }
+
+    /** Whether a consumer of probe events became known on this node within the configured time. */
+    private static boolean awaitConsumer(ProbePublisherConfig config, BundleContext context)
+            throws InterruptedException {
+        Filter consumers;
+        try {
+            consumers = context.createFilter("(" + CONSUMED + "=" + ProbeEvent.class.getName() + ")");
+        } catch (InvalidSyntaxException e) {
+            throw new IllegalStateException(e);
+        }
+        ServiceTracker<Object, Object> tracker = new ServiceTracker<>(context, consumers, null);
+        tracker.open(true);
+        try {
+            if (tracker.waitForService(TimeUnit.SECONDS.toMillis(config.consumer_timeout_s())) == null) {
+                return false;
+            }
+        } finally {
+            tracker.close();
+        }
+        System.out.println("probe publisher: run=" + config.run() + " consumer known");
+        return true;
     }
 
     @Deactivate

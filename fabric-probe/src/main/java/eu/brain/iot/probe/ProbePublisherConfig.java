@@ -13,6 +13,9 @@ public @interface ProbePublisherConfig {
     /** Events per second; 0: back to back. */
     int rate() default 500;
 
-    /** How long to wait for another node's behaviour to take probe events (its interest), seconds. */
+    /**
+     * How long to wait for a consumer of probe events on this node (a behaviour, or the federation's forwarder for
+     * another node's), seconds; 0: publish at once, without waiting (the events nobody takes are the BMS's).
+     */
     int consumer_timeout_s() default 120;
 }

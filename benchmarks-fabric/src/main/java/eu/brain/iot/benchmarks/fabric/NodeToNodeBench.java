@@ -25,6 +25,7 @@ final class NodeToNodeBench {
 
     private static final long START_TIMEOUT_S = 180;
     private static final long RUN_TIMEOUT_S = 300;
+    private static final int KEY_BYTES = 32;
 
     private final Settings settings;
 
@@ -46,10 +47,7 @@ final class NodeToNodeBench {
     /** Node A publishes, node B counts, through the broker. */
     Row acrossNodes(String brokerName, BrokerAddress broker) throws Exception {
         Path dir = fresh(settings.work().resolve("nodes-" + brokerName.split(" ")[0].toLowerCase()));
-        Path key = dir.resolve("fabric.key");
-        byte[] secret = new byte[32];
-        new SecureRandom().nextBytes(secret);
-        Files.writeString(key, Base64.getEncoder().encodeToString(secret) + "\n");
+        Path key = fabricKey(dir);
         Path configB = nodeConfig(dir, "nodeB", broker, key, true);
         Path configA = nodeConfig(dir, "nodeA", broker, key, false);
         try (NodeProcess b = new NodeProcess("nodeB", settings.root(), dir.resolve("nodeB"), configB);
@@ -119,7 +117,7 @@ final class NodeToNodeBench {
     }
 
     /** The numeric {@code key=value} fields of a probe line. */
-    private static Map<String, Long> fields(String line) {
+    static Map<String, Long> fields(String line) {
         Map<String, Long> f = new HashMap<>();
         for (String part : line.split(" ")) {
             int eq = part.indexOf('=');
@@ -130,12 +128,30 @@ final class NodeToNodeBench {
         return f;
     }
 
+    /** A fabric key made for the run ({@code fabric.key} in the folder), 32 random bytes in base64. */
+    static Path fabricKey(Path dir) throws IOException {
+        Path key = dir.resolve("fabric.key");
+        byte[] secret = new byte[KEY_BYTES];
+        new SecureRandom().nextBytes(secret);
+        Files.writeString(key, Base64.getEncoder().encodeToString(secret) + "\n");
+        return key;
+    }
+
+    /**
+     * The federation's configuration of a node (fabric {@code bench}) into its configuration folder, with the extra
+     * lines given ({@code key=value\n} each).
+     */
+    static void federationConfig(Path config, Path dir, String node, BrokerAddress broker, Path key, String extra)
+            throws IOException {
+        Files.writeString(config.resolve("eu.brain.iot.federation.cfg"), "broker.uri=" + broker.uri()
+                + "\nfabric.name=bench\nnode.name=" + node + "\nkey.file=" + key + "\nstate.dir="
+                + dir.resolve(node).resolve("federation") + "\n" + extra, StandardCharsets.UTF_8);
+    }
+
     private Path nodeConfig(Path dir, String node, BrokerAddress broker, Path key, boolean counts) throws IOException {
         Path config = Files.createDirectories(dir.resolve(node).resolve("config"));
         copyProbe(config);
-        Files.writeString(config.resolve("eu.brain.iot.federation.cfg"), "broker.uri=" + broker.uri()
-                + "\nfabric.name=bench\nnode.name=" + node + "\nkey.file=" + key + "\nstate.dir="
-                + dir.resolve(node).resolve("federation") + "\n", StandardCharsets.UTF_8);
+        federationConfig(config, dir, node, broker, key, "");
         if (counts) {
             Files.writeString(config.resolve("eu.brain.iot.probe.counter.cfg"),
                     "file=" + dir.resolve(node).resolve("received.txt") + "\n");
@@ -143,7 +159,7 @@ final class NodeToNodeBench {
         return config;
     }
 
-    private void copyProbe(Path config) throws IOException {
+    void copyProbe(Path config) throws IOException {
         Path probe = settings.root().resolve("fabric-probe/target/fabric-probe.jar");
         if (!Files.isRegularFile(probe)) {
             throw new IOException(probe + " does not exist: build it (mvn -B -pl fabric-probe -am package)");
@@ -151,7 +167,7 @@ final class NodeToNodeBench {
         Files.copy(probe, config.resolve("fabric-probe.jar"), StandardCopyOption.REPLACE_EXISTING);
     }
 
-    private static Path fresh(Path dir) throws IOException {
+    static Path fresh(Path dir) throws IOException {
         if (Files.exists(dir)) {
             try (var files = Files.walk(dir)) {
                 for (Path p : files.sorted(java.util.Comparator.reverseOrder()).toList()) {

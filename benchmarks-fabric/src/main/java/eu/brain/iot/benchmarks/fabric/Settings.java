@@ -7,7 +7,7 @@ import java.util.List;
  * The benchmark's command line.
  *
  * @param parts                what to measure: {@code bare} (two bare clients), {@code nodes} (node to node),
- *                             {@code local} (the local bus of one node)
+ *                             {@code install} (a remote install on demand), {@code local} (the local bus of one node)
  * @param brokers              which brokers, in order: {@code embedded}, {@code mosquitto}
  * @param mosquittoUri         a Mosquitto already running (null: the benchmark starts Debian's on a free port)
  * @param floodMessages        messages measured back to back
@@ -15,16 +15,21 @@ import java.util.List;
  * @param rate                 the paced rate of the latency runs, messages (events) per second
  * @param latencyWarmupSeconds paced seconds not measured
  * @param latencySeconds       paced seconds measured
+ * @param installs             remote installs measured (after a first one, not measured)
  * @param root                 the checkout (broker/target/broker.jar)
  * @param work                 scratch folder (brokers' state and logs)
  */
 record Settings(List<String> parts, List<String> brokers, String mosquittoUri, int floodMessages, int floodWarmup, int rate,
-        double latencyWarmupSeconds, double latencySeconds, Path root, Path work) {
+        double latencyWarmupSeconds, double latencySeconds, int installs, Path root, Path work) {
+
+    /** What {@code --parts} takes, in the order of the table. */
+    static final List<String> PARTS = List.of("bare", "nodes", "install", "local");
 
     static final String USAGE = """
             Usage: java -jar benchmarks-fabric/target/fabric-bench.jar [options]
-              --parts LIST          bare,nodes,local (default all: two bare MQTT clients, node to node, one node's
-                                    local bus); node to node needs the federation bundle in node/target/fabric-node.jar
+              --parts LIST          bare,nodes,install,local (default all: two bare MQTT clients, node to node, a
+                                    remote install on demand, one node's local bus); node to node and the remote
+                                    install need the federation bundle in node/target/fabric-node.jar
               --brokers LIST        embedded,mosquitto (default both, in that order)
               --mosquitto-uri URI   a running Mosquitto (default: start Debian's /usr/sbin/mosquitto on a free port)
               --messages N          messages measured back to back (default 200000)
@@ -32,12 +37,13 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
               --rate N              paced rate of the latency runs, per second (default 2000)
               --latency-warmup S    paced seconds not measured (default 3)
               --latency-seconds S   paced seconds measured (default 10)
+              --installs N          remote installs measured, after a first one not measured (default 20)
               --root DIR            the checkout (default .)
               --work DIR            scratch folder (default benchmarks-fabric/target/run)
             """;
 
     static Settings parse(String[] args) {
-        List<String> parts = List.of("bare", "nodes", "local");
+        List<String> parts = PARTS;
         List<String> brokers = List.of("embedded", "mosquitto");
         String mosquitto = null;
         int messages = 200_000;
@@ -45,6 +51,7 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
         int rate = 2000;
         double latencyWarmup = 3;
         double latency = 10;
+        int installs = 20;
         Path root = Path.of(".");
         Path work = null;
         for (int i = 0; i < args.length; i++) {
@@ -62,6 +69,7 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
                 case "--rate" -> rate = positive(flag, v);
                 case "--latency-warmup" -> latencyWarmup = positive(flag, v);
                 case "--latency-seconds" -> latency = positive(flag, v);
+                case "--installs" -> installs = positive(flag, v);
                 case "--root" -> root = Path.of(v);
                 case "--work" -> work = Path.of(v);
                 default -> throw new IllegalArgumentException("unknown option " + flag);
@@ -73,12 +81,13 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
             }
         }
         for (String p : parts) {
-            if (!List.of("bare", "nodes", "local").contains(p)) {
-                throw new IllegalArgumentException("--parts takes bare, nodes and local, found '" + p + "'");
+            if (!PARTS.contains(p)) {
+                throw new IllegalArgumentException("--parts takes " + String.join(", ", PARTS) + ", found '" + p
+                        + "'");
             }
         }
         root = root.toAbsolutePath().normalize();
-        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, root,
+        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, installs, root,
                 (work == null ? root.resolve("benchmarks-fabric/target/run") : work).toAbsolutePath());
     }
 
