@@ -72,6 +72,9 @@ final class FabricInstaller implements BundleInstaller {
     private volatile BundleInstaller local;
     private final InstallDesk desk;
 
+    /** Bid deadlines waited at most when no node has offered a candidate yet ({@link #deadline}). */
+    static final int NO_OFFER_WAIT = 20;
+
     private final Map<String, Bid> bids = new HashMap<>();
     private final Map<String, Order> orders = new HashMap<>();
 
@@ -83,6 +86,8 @@ final class FabricInstaller implements BundleInstaller {
         final Map<String, Offer> offers = new HashMap<>();
         final Deferred<List<BehaviourCandidate>> answer;
         ScheduledFuture<?> deadline;
+        /** The deadline passed with no candidate offered: the nodes still to answer are waited for longer. */
+        boolean extended;
 
         Bid(String id, List<String> types, Set<String> waiting, Deferred<List<BehaviourCandidate>> answer) {
             this.id = id;
@@ -245,7 +250,7 @@ final class FabricInstaller implements BundleInstaller {
                 return;
             }
         }
-        bid.deadline = in.schedule(() -> decide(bid), settings.bidMillis(), TimeUnit.MILLISECONDS);
+        bid.deadline = in.schedule(() -> deadline(bid), settings.bidMillis(), TimeUnit.MILLISECONDS);
         if (bid.waiting.isEmpty()) {
             decide(bid);
         }
@@ -261,6 +266,23 @@ final class FabricInstaller implements BundleInstaller {
         if (bid.waiting.isEmpty()) {
             decide(bid);
         }
+    }
+
+    /**
+     * The bid's deadline: decided among the answers in, when one offers a candidate; with none offered yet while
+     * nodes are still to answer (a node slower than {@code install.bid.ms}, e.g. under load), they are waited for
+     * until {@link #NO_OFFER_WAIT} deadlines have passed: deciding then would give the event up for nothing.
+     */
+    private void deadline(Bid bid) {
+        boolean offered = bid.offers.values().stream().anyMatch(o -> o.candidates() != null
+                && !o.candidates().isEmpty());
+        if (offered || bid.waiting.isEmpty() || bid.extended) {
+            decide(bid);
+            return;
+        }
+        bid.extended = true;
+        bid.deadline = in.schedule(() -> decide(bid), settings.bidMillis() * (NO_OFFER_WAIT - 1),
+                TimeUnit.MILLISECONDS);
     }
 
     private void decide(Bid bid) {

@@ -14,6 +14,8 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
+import org.osgi.service.component.annotations.ReferenceCardinality;
+import org.osgi.service.component.annotations.ReferencePolicyOption;
 
 import eu.brain.iot.edge.model.api.DeviceOwnership;
 import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
@@ -57,9 +59,14 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
     private long outSinceNanos = -1;
     private List<String> lapsedBefore = List.of();
 
+    /**
+     * On a node: the edge's ownership is an optional reference (a node without an edge still resolves the federation
+     * bundle); without one the lease manager says so and leases nothing, and it starts again when an edge comes.
+     */
     @Activate
-    public LeaseManager(@Reference EventBus bus, @Reference DeviceOwnership ownership,
-            @Reference FabricComponent fabric, LeaseConfig config) {
+    public LeaseManager(@Reference EventBus bus,
+            @Reference(cardinality = ReferenceCardinality.OPTIONAL, policyOption = ReferencePolicyOption.GREEDY)
+            DeviceOwnership ownership, @Reference FabricComponent fabric, LeaseConfig config) {
         this(bus, ownership, () -> {
             FabricNode node = fabric.node();
             return node != null && node.joined();
@@ -73,8 +80,14 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         this.inFabric = inFabric;
         this.leaseMillis = Math.max(100, leaseMs);
         long renew = Math.max(10, Math.min(renewMs, leaseMillis / 2));
-        this.self = ownership.nodeName();
         this.thread = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-leases"));
+        if (ownership == null) {
+            this.self = null;
+            LOG.log(System.Logger.Level.WARNING, "Device leases configured ({0}) on a node without an edge: nothing "
+                    + "to lease", LeaseConfig.PID);
+            return;
+        }
+        this.self = ownership.nodeName();
         thread.execute(() -> startListening("started"));
         thread.scheduleWithFixedDelay(this::safeTick, renew, renew, TimeUnit.MILLISECONDS);
         LOG.log(System.Logger.Level.INFO, "Device leases of node {0}: renewed every {1} ms, held {2} ms", self, renew,
@@ -93,7 +106,7 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
 
     @Override
     public void notify(DeviceLease lease) {
-        if (lease.node == null || lease.share == null || lease.owned == null) {
+        if (self == null || lease.node == null || lease.share == null || lease.owned == null) {
             return;
         }
         long now = System.nanoTime();

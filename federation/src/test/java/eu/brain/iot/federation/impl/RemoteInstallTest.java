@@ -170,6 +170,31 @@ class RemoteInstallTest extends FabricTestBase {
     }
 
     /**
+     * The only node that offers the behaviour answers after the bid's deadline (a node under load): with no candidate
+     * offered yet, the asking node waits for it rather than give the events up.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aLateOfferIsWaitedForWhenNoOtherNodeOffersACandidate(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        Recorder recorder = new Recorder();
+        TestNode[] bRef = new TestNode[1];
+        FakeInstaller atA = new FakeInstaller(); // nothing for it
+        FakeInstaller atB = offering(bRef, recorder);
+        Deferred<List<BehaviourCandidate>> late = new Deferred<>();
+        atB.findAnswer = late.getPromise();
+        TestNode a = node("a", atA);
+        bRef[0] = node("b", atB);
+        awaitOnline(a, bRef[0]);
+
+        Promise<List<BehaviourCandidate>> found = a.fabric.installer().find(List.of(MOVED));
+        await("still waiting for b, the only node left to answer, past the bid's deadline (100 ms)")
+                .during(Duration.ofMillis(400)).atMost(DEADLINE).until(() -> !found.isDone());
+        late.resolve(List.of(FakeInstaller.candidate(RECORDER, MOVED)));
+        assertThat(found.getValue()).extracting(cand -> cand.node).containsExactly("b");
+    }
+
+    /**
      * The receiving node is killed and, once the others saw its Last Will, started again with its state: the events
      * published meanwhile, which no node online takes, are held by the publisher's BMS for it (its last interest
      * took them) and reach it when it is back, with every other event: once each, in publish order.
