@@ -137,21 +137,18 @@ final class NodeToNodeBench {
         return key;
     }
 
-    /**
-     * The federation's configuration of a node (fabric {@code bench}) into its configuration folder, with the extra
-     * lines given ({@code key=value\n} each).
-     */
-    static void federationConfig(Path config, Path dir, String node, BrokerAddress broker, Path key, String extra)
+    /** The federation's configuration of a node (fabric {@code bench}) into its configuration folder. */
+    static void federationConfig(Path config, Path dir, String node, BrokerAddress broker, Path key)
             throws IOException {
         Files.writeString(config.resolve("eu.brain.iot.federation.cfg"), "broker.uri=" + broker.uri()
                 + "\nfabric.name=bench\nnode.name=" + node + "\nkey.file=" + key + "\nstate.dir="
-                + dir.resolve(node).resolve("federation") + "\n" + extra, StandardCharsets.UTF_8);
+                + dir.resolve(node).resolve("federation") + "\n", StandardCharsets.UTF_8);
     }
 
     private Path nodeConfig(Path dir, String node, BrokerAddress broker, Path key, boolean counts) throws IOException {
         Path config = Files.createDirectories(dir.resolve(node).resolve("config"));
         copyProbe(config);
-        federationConfig(config, dir, node, broker, key, "");
+        federationConfig(config, dir, node, broker, key);
         if (counts) {
             Files.writeString(config.resolve("eu.brain.iot.probe.counter.cfg"),
                     "file=" + dir.resolve(node).resolve("received.txt") + "\n");

@@ -38,13 +38,6 @@ final class RemoteInstallBench {
     private static final long INSTALL_TIMEOUT_S = 120;
     private static final long SHELL_TIMEOUT_S = 60;
     private static final long POLL_MS = 100;
-    /**
-     * The federation's {@code install.bid.ms} on both nodes: how long node A's question "which node installs?" waits
-     * for B's offer. With two nodes the choice is made as soon as B answers, so this adds nothing to the figures; the
-     * default (100 ms) is shorter than B's first answer can take on a loaded machine, and a late answer makes A give
-     * the event up (no candidate) and not search again for a minute.
-     */
-    private static final long BID_MS = 5000;
 
     private final Settings settings;
 
@@ -80,9 +73,8 @@ final class RemoteInstallBench {
         Path key = NodeToNodeBench.fabricKey(dir);
         Path configA = Files.createDirectories(dir.resolve("nodeA/config"));
         Path configB = Files.createDirectories(dir.resolve("nodeB/config"));
-        String bid = "install.bid.ms=" + BID_MS + "\n";
-        NodeToNodeBench.federationConfig(configA, dir, "nodeA", broker, key, bid);
-        NodeToNodeBench.federationConfig(configB, dir, "nodeB", broker, key, bid);
+        NodeToNodeBench.federationConfig(configA, dir, "nodeA", broker, key);
+        NodeToNodeBench.federationConfig(configB, dir, "nodeB", broker, key);
         // A publishes (the probe bundle dropped in, its counter idle without configuration) and installs from the
         // project's index; B installs from the probe's index, and has the counter's configuration ready for it
         new NodeToNodeBench(settings).copyProbe(configA);
