@@ -17,8 +17,9 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
  * <p>
  * A node's offline status is believed only once this node's own connection has outlived it by
  * {@link #OFFLINE_CONFIRM_MILLIS}: a broker that shuts down publishes the Last Will of every client it still holds
- * (Mosquitto does) just before it drops them all, this node included. Believed at once, such a will took the
- * forwarders of a node that was not gone, and the events published until the broker was back found no consumer.
+ * (Mosquitto does) just before it drops them all, this node included. Believed at once, such a will would take
+ * the forwarders of a node that is not gone, and the events published until the broker is back would find no
+ * consumer.
  * When this node's connection drops meanwhile, the status is dropped: after the reconnection the broker's retained
  * status of that node (or its next one) decides.
  * <p>

@@ -18,7 +18,7 @@ import eu.brain.iot.behaviours.warehouse.Grid;
  * The docks the robot behaviour learnt (the docking cell each robot was first seen on), kept in the bundle's own
  * data area so that the behaviour started again (stopped while the fleet works, brought back by the BMS) sends every
  * robot home to the dock it left from, not to the nearest free docking cell: robots parked next to each other at the
- * edge of the docking area stood in each other's way in and out, for ever. The book is for one warehouse: its first
+ * edge of the docking area would stand in each other's way in and out, for ever. The book is for one warehouse: its first
  * line names the map (a checksum of its areas), and a book of another map is not read.
  * <p>
  * File format ({@code docks.tsv}): {@code map <checksum>}, then {@code <robot> <x> <y>} per line.

@@ -134,7 +134,7 @@ final class Errands {
      * The dock of a robot first met out on the floor: the one an earlier run learnt for it, unless another robot has
      * it now; else the nearest docking cell that is no robot's dock (nor remembered as one) and where no other robot
      * stands, first among those next to no such cell (robots parked side by side at the edge of the docking area
-     * stood in each other's way in and out), then among all.
+     * would stand in each other's way in and out), then among all.
      */
     private Cell dockFor(String robot, Cell from, Grid grid, List<RobotState> robots) {
         Cell known = remembered.get(robot);
