@@ -3,6 +3,7 @@ package eu.brain.iot.behaviours.warehouse.traffic;
 import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.Deque;
+import java.util.function.IntPredicate;
 
 /**
  * The fleet's space-time plan, made again every step over a rolling window (windowed cooperative A*): robots are
@@ -51,10 +52,16 @@ public final class FleetPlanner {
     /** The cells {@link #occupant} was filled for in the last round. */
     private final int[] occupiedBefore;
     private static final int MAX_PUSH_DEPTH = 6;
+    /** Goals' distance tables kept beyond one per robot (goals just left, robots standing in passages). */
+    private static final int DISTANCE_TABLES_SPARE = 64;
     /** Search nodes a robot may expand per step of the window (bounds the time of a search that finds no way). */
     private static final int SEARCH_BUDGET_PER_STEP = 200;
     private static final int MAX_PUSH_RETRIES = 6;
     private boolean[] carts;
+    /** The robot being searched for now (its own cell is never in its way). */
+    private int searching;
+    /** A cell where a robot not planned yet stands: at the deepest push, it cannot make way any more. */
+    private final IntPredicate unpushable = this::unpushable;
     private final Integer[] order;
     private long rounds;
     private long fallbacks;
@@ -71,7 +78,7 @@ public final class FleetPlanner {
         this.window = window;
         this.table = new ReservationTable(map.cells(), window);
         this.search = new SpaceTimeSearch(map, table, SEARCH_BUDGET_PER_STEP * (window + 1));
-        this.distances = new Distances(map, Math.max(64, 4 * robots));
+        this.distances = new Distances(map, robots + DISTANCE_TABLES_SPARE);
         cell = new int[robots];
         committed = new int[robots][];
         Arrays.fill(committed, new int[0]);
@@ -279,7 +286,8 @@ public final class FleetPlanner {
     /**
      * Plans one robot; every robot not planned yet whose cell its path drives through is planned at once after it
      * (it inherits the priority, as in PIBT), and when such a robot cannot make way, this robot is planned again
-     * with that robot's cell kept clear.
+     * with that robot's cell kept clear. At the deepest push ({@link #MAX_PUSH_DEPTH}) nobody can be pushed any
+     * more, so the search keeps clear of every robot not planned yet from the start.
      *
      * @return whether the robot has a plan (else it has no reservation beyond step 0)
      */
@@ -293,11 +301,15 @@ public final class FleetPlanner {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
             search.depth(depth);
-            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r],
-                    committed[r]);
+            // at the deepest push nobody in the way can be pushed: keep clear of them at once rather than learn
+            // them one retry at a time
+            searching = r;
+            search.immovable(depth >= MAX_PUSH_DEPTH ? unpushable : null);
+            int[] found = search.find(r, cell[r], to, to == cell[r] ? distances.around(to, window) : distances.to(to),
+                    blocked, forbidden, until, heading[r], committed[r]);
             if (found == null && to != cell[r]) {
                 // no way to the goal through the others: at least make way
-                found = search.find(r, cell[r], cell[r], distances.to(cell[r]), blocked, forbidden,
+                found = search.find(r, cell[r], cell[r], distances.around(cell[r], window), blocked, forbidden,
                         until, heading[r], committed[r]);
             }
             if (found == null) {
@@ -333,6 +345,11 @@ public final class FleetPlanner {
             }
         }
         return false;
+    }
+
+    private boolean unpushable(int c) {
+        int o = occupant[c];
+        return o >= 0 && o != searching && !planned[o];
     }
 
     private static int indexOf(int[] cells, int c) {

@@ -1,6 +1,7 @@
 package eu.brain.iot.behaviours.warehouse.traffic;
 
 import java.util.Arrays;
+import java.util.function.IntPredicate;
 
 /**
  * One robot's best path over the window through the others' reservations: A* over (cell, step), a step being a
@@ -24,6 +25,8 @@ final class SpaceTimeSearch {
     private final int[] closed;
     private final int[] banned;
     private PassageClaims claims = new PassageClaims();
+    /** Cells the robot may not enter at all in the next searches (robots that cannot make way), or null. */
+    private IntPredicate immovable;
     /** Each node's direction in the passage it is in (+1 towards end B, -1 towards A, 0 none). */
     private final byte[] heading;
     private final int[] bannedUntil;
@@ -112,7 +115,8 @@ final class SpaceTimeSearch {
                     continue;
                 }
                 if (n != cell && (banned[n] == stamp && nt <= bannedUntil[n]
-                        || n != goal && blocked != null && blocked[n])) {
+                        || n != goal && blocked != null && blocked[n]
+                        || immovable != null && immovable.test(n))) {
                     continue;
                 }
                 if (distance[n] >= Distances.UNREACHABLE || !table.free(robot, n, nt)) {
@@ -143,6 +147,14 @@ final class SpaceTimeSearch {
     /** How deep in a chain of pushes the next searches are (a pushed robot needs a way out, not the best path). */
     void depth(int depth) {
         this.depthHint = depth;
+    }
+
+    /**
+     * Cells the next searches keep out of for the whole window (robots standing there that cannot be pushed), or
+     * null for none.
+     */
+    void immovable(IntPredicate cells) {
+        this.immovable = cells;
     }
 
     /** The passages' claims this round (the planner's, read at every search). */
