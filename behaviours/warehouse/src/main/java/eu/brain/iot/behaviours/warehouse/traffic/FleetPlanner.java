@@ -47,6 +47,8 @@ public final class FleetPlanner {
     /** Who drives through which passage when, this round. */
     private final PassageClaims claims = new PassageClaims();
     private final boolean[] planned;
+    /** Whether a robot waits in the queue of robots to plan again (held robots took their cells). */
+    private final boolean[] queued;
     /** The robot standing in each cell now, -1 for none. */
     private final int[] occupant;
     /** The cells {@link #occupant} was filled for in the last round. */
@@ -94,6 +96,7 @@ public final class FleetPlanner {
         heading = new int[robots];
         search.claims(claims);
         planned = new boolean[robots];
+        queued = new boolean[robots];
         occupant = new int[map.cells()];
         occupiedBefore = new int[robots];
         Arrays.fill(occupiedBefore, -1);
@@ -198,6 +201,7 @@ public final class FleetPlanner {
         for (int r = 0; r < n; r++) {
             stationary[r] = false;
             planned[r] = false;
+            queued[r] = false;
             if (cell[r] < 0) {
                 continue;
             }
@@ -241,6 +245,7 @@ public final class FleetPlanner {
             }
             while (!again.isEmpty()) {
                 int r = again.poll();
+                queued[r] = false;
                 if (budget-- > 0 && planOne(r, 0)) {
                     continue;
                 }
@@ -307,8 +312,10 @@ public final class FleetPlanner {
             search.immovable(depth >= MAX_PUSH_DEPTH ? unpushable : null);
             int[] found = search.find(r, cell[r], to, to == cell[r] ? distances.around(to, window) : distances.to(to),
                     blocked, forbidden, until, heading[r], committed[r]);
-            if (found == null && to != cell[r]) {
-                // no way to the goal through the others: at least make way
+            // no way to the goal through the others: at least make way, unless the search found no way to the
+            // window's end at all (every step it could take was tried): the way out would meet the same walls
+            boolean boxedIn = search.exhausted() && (blocked == null || !blocked[cell[r]]);
+            if (found == null && to != cell[r] && !boxedIn) {
                 found = search.find(r, cell[r], cell[r], distances.around(cell[r], window), blocked, forbidden,
                         until, heading[r], committed[r]);
             }
@@ -396,7 +403,8 @@ public final class FleetPlanner {
                 if (o != ReservationTable.NONE && o != r && s >= 1) {
                     release(o);
                     planned[o] = false;
-                    if (!again.contains(o)) {
+                    if (!queued[o]) {
+                        queued[o] = true;
                         again.add(o);
                     }
                 }
