@@ -292,7 +292,7 @@ public final class FleetPlanner {
      * Plans one robot; every robot not planned yet whose cell its path drives through is planned at once after it
      * (it inherits the priority, as in PIBT), and when such a robot cannot make way, this robot is planned again
      * with that robot's cell kept clear. At the deepest push ({@link #MAX_PUSH_DEPTH}) nobody can be pushed any
-     * more, so the search keeps clear of every robot not planned yet from the start.
+     * more: when the robot's best path meets a robot not planned yet, its second search keeps clear of all of them.
      *
      * @return whether the robot has a plan (else it has no reservation beyond step 0)
      */
@@ -306,10 +306,10 @@ public final class FleetPlanner {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
             search.depth(depth);
-            // at the deepest push nobody in the way can be pushed: keep clear of them at once rather than learn
-            // them one retry at a time
+            // at the deepest push nobody in the way can be pushed: once the best path met one, the next search
+            // keeps clear of all of them at once rather than learn them one retry at a time
             searching = r;
-            search.immovable(depth >= MAX_PUSH_DEPTH ? unpushable : null);
+            search.immovable(depth >= MAX_PUSH_DEPTH && attempt > 0 ? unpushable : null);
             int[] found = search.find(r, cell[r], to, to == cell[r] ? distances.around(to, window) : distances.to(to),
                     blocked, forbidden, until, heading[r], committed[r]);
             // no way to the goal through the others: at least make way, unless the search found no way to the
