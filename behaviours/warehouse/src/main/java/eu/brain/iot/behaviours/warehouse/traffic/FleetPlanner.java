@@ -3,6 +3,7 @@ package eu.brain.iot.behaviours.warehouse.traffic;
 import java.util.ArrayDeque;
 import java.util.Arrays;
 import java.util.Deque;
+import java.util.function.IntPredicate;
 
 /**
  * The fleet's space-time plan, made again every step over a rolling window (windowed cooperative A*): robots are
@@ -46,15 +47,23 @@ public final class FleetPlanner {
     /** Who drives through which passage when, this round. */
     private final PassageClaims claims = new PassageClaims();
     private final boolean[] planned;
+    /** Whether a robot waits in the queue of robots to plan again (held robots took their cells). */
+    private final boolean[] queued;
     /** The robot standing in each cell now, -1 for none. */
     private final int[] occupant;
     /** The cells {@link #occupant} was filled for in the last round. */
     private final int[] occupiedBefore;
     private static final int MAX_PUSH_DEPTH = 6;
+    /** Goals' distance tables kept beyond one per robot (goals just left, robots standing in passages). */
+    private static final int DISTANCE_TABLES_SPARE = 64;
     /** Search nodes a robot may expand per step of the window (bounds the time of a search that finds no way). */
     private static final int SEARCH_BUDGET_PER_STEP = 200;
     private static final int MAX_PUSH_RETRIES = 6;
     private boolean[] carts;
+    /** The robot being searched for now (its own cell is never in its way). */
+    private int searching;
+    /** A cell where a robot not planned yet stands: at the deepest push, it cannot make way any more. */
+    private final IntPredicate unpushable = this::unpushable;
     private final Integer[] order;
     private long rounds;
     private long fallbacks;
@@ -71,7 +80,7 @@ public final class FleetPlanner {
         this.window = window;
         this.table = new ReservationTable(map.cells(), window);
         this.search = new SpaceTimeSearch(map, table, SEARCH_BUDGET_PER_STEP * (window + 1));
-        this.distances = new Distances(map, Math.max(64, 4 * robots));
+        this.distances = new Distances(map, robots + DISTANCE_TABLES_SPARE);
         cell = new int[robots];
         committed = new int[robots][];
         Arrays.fill(committed, new int[0]);
@@ -87,6 +96,7 @@ public final class FleetPlanner {
         heading = new int[robots];
         search.claims(claims);
         planned = new boolean[robots];
+        queued = new boolean[robots];
         occupant = new int[map.cells()];
         occupiedBefore = new int[robots];
         Arrays.fill(occupiedBefore, -1);
@@ -191,6 +201,7 @@ public final class FleetPlanner {
         for (int r = 0; r < n; r++) {
             stationary[r] = false;
             planned[r] = false;
+            queued[r] = false;
             if (cell[r] < 0) {
                 continue;
             }
@@ -234,6 +245,7 @@ public final class FleetPlanner {
             }
             while (!again.isEmpty()) {
                 int r = again.poll();
+                queued[r] = false;
                 if (budget-- > 0 && planOne(r, 0)) {
                     continue;
                 }
@@ -279,7 +291,8 @@ public final class FleetPlanner {
     /**
      * Plans one robot; every robot not planned yet whose cell its path drives through is planned at once after it
      * (it inherits the priority, as in PIBT), and when such a robot cannot make way, this robot is planned again
-     * with that robot's cell kept clear.
+     * with that robot's cell kept clear. At the deepest push ({@link #MAX_PUSH_DEPTH}) nobody can be pushed any
+     * more: when the robot's best path meets a robot not planned yet, its second search keeps clear of all of them.
      *
      * @return whether the robot has a plan (else it has no reservation beyond step 0)
      */
@@ -293,11 +306,17 @@ public final class FleetPlanner {
                 return true; // planned meanwhile, pushed by the robot that went first
             }
             search.depth(depth);
-            int[] found = search.find(r, cell[r], to, distances.to(to), blocked, forbidden, until, heading[r],
-                    committed[r]);
-            if (found == null && to != cell[r]) {
-                // no way to the goal through the others: at least make way
-                found = search.find(r, cell[r], cell[r], distances.to(cell[r]), blocked, forbidden,
+            // at the deepest push nobody in the way can be pushed: once the best path met one, the next search
+            // keeps clear of all of them at once rather than learn them one retry at a time
+            searching = r;
+            search.immovable(depth >= MAX_PUSH_DEPTH && attempt > 0 ? unpushable : null);
+            int[] found = search.find(r, cell[r], to, to == cell[r] ? distances.around(to, window) : distances.to(to),
+                    blocked, forbidden, until, heading[r], committed[r]);
+            // no way to the goal through the others: at least make way, unless the search found no way to the
+            // window's end at all (every step it could take was tried): the way out would meet the same walls
+            boolean boxedIn = search.exhausted() && (blocked == null || !blocked[cell[r]]);
+            if (found == null && to != cell[r] && !boxedIn) {
+                found = search.find(r, cell[r], cell[r], distances.around(cell[r], window), blocked, forbidden,
                         until, heading[r], committed[r]);
             }
             if (found == null) {
@@ -333,6 +352,11 @@ public final class FleetPlanner {
             }
         }
         return false;
+    }
+
+    private boolean unpushable(int c) {
+        int o = occupant[c];
+        return o >= 0 && o != searching && !planned[o];
     }
 
     private static int indexOf(int[] cells, int c) {
@@ -379,7 +403,8 @@ public final class FleetPlanner {
                 if (o != ReservationTable.NONE && o != r && s >= 1) {
                     release(o);
                     planned[o] = false;
-                    if (!again.contains(o)) {
+                    if (!queued[o]) {
+                        queued[o] = true;
                         again.add(o);
                     }
                 }

@@ -1,6 +1,7 @@
 package eu.brain.iot.behaviours.warehouse.traffic;
 
 import java.util.Arrays;
+import java.util.function.IntPredicate;
 
 /**
  * One robot's best path over the window through the others' reservations: A* over (cell, step), a step being a
@@ -18,19 +19,27 @@ final class SpaceTimeSearch {
     private final int cells;
     private final int maxExpansions;
     private int depthHint;
-    private final int[] g;
+    /**
+     * Per node (step * cells + cell): the search that saw it last in the high 32 bits, {@link #CLOSED} once
+     * expanded, its cost so far in the low 31 bits; one read tells whether a node is new, open or done.
+     */
+    private final long[] mark;
     private final int[] parent;
-    private final int[] seen;
-    private final int[] closed;
     private final int[] banned;
     private PassageClaims claims = new PassageClaims();
+    /** Cells the robot may not enter at all in the next searches (robots that cannot make way), or null. */
+    private IntPredicate immovable;
     /** Each node's direction in the passage it is in (+1 towards end B, -1 towards A, 0 none). */
     private final byte[] heading;
     private final int[] bannedUntil;
     private static final int[] NO_CELLS = new int[0];
+    private static final long CLOSED = 1L << 31;
+    private static final long COST = CLOSED - 1;
     private long[] heapKeys = new long[1024];
     private int[] heapNodes = new int[1024];
     private int heapSize;
+    /** Whether the last search ended with no node left to expand. */
+    private boolean exhausted;
     private int generation;
     private long expansions;
 
@@ -41,10 +50,8 @@ final class SpaceTimeSearch {
         this.cells = map.cells();
         this.maxExpansions = maxExpansions;
         int nodes = cells * (window + 1);
-        g = new int[nodes];
+        mark = new long[nodes];
         parent = new int[nodes];
-        seen = new int[nodes];
-        closed = new int[nodes];
         banned = new int[cells];
         heading = new byte[nodes];
         bannedUntil = new int[cells];
@@ -80,24 +87,27 @@ final class SpaceTimeSearch {
     int[] find(int robot, int start, int goal, int[] distance, boolean[] blocked, int[] forbidden,
                int[] forbiddenUntil, int startHeading, int[] committed) {
         int stamp = ++generation;
+        exhausted = false;
         for (int i = 0; i < forbidden.length; i++) {
             banned[forbidden[i]] = stamp;
             bannedUntil[forbidden[i]] = forbiddenUntil[i];
         }
         heapSize = 0;
+        long seenNow = (long) stamp << 32;
         int startNode = start;
-        seen[startNode] = stamp;
-        g[startNode] = 0;
+        mark[startNode] = seenNow;
         parent[startNode] = -1;
         heading[startNode] = (byte) startHeading;
         push(startNode, h(distance, start), 0);
         int budget = maxExpansions / (1 + 3 * Math.min(1, depthHint));
         while (heapSize > 0 && budget-- > 0) {
             int node = pop();
-            if (closed[node] == stamp) {
+            long m = mark[node]; // seen in this search: it was pushed in it
+            if ((m & CLOSED) != 0) {
                 continue;
             }
-            closed[node] = stamp;
+            mark[node] = m | CLOSED;
+            int gNode = (int) (m & COST);
             expansions++;
             int t = node / cells;
             int cell = node - t * cells;
@@ -111,8 +121,15 @@ final class SpaceTimeSearch {
                 if (t < committed.length && n != committed[t]) {
                     continue;
                 }
+                int child = nt * cells + n;
+                long cm = mark[child];
+                boolean seenBefore = (int) (cm >>> 32) == stamp;
+                if (seenBefore && (cm & CLOSED) != 0) {
+                    continue;
+                }
                 if (n != cell && (banned[n] == stamp && nt <= bannedUntil[n]
-                        || n != goal && blocked != null && blocked[n])) {
+                        || n != goal && blocked != null && blocked[n]
+                        || immovable != null && immovable.test(n))) {
                     continue;
                 }
                 if (distance[n] >= Distances.UNREACHABLE || !table.free(robot, n, nt)) {
@@ -122,27 +139,43 @@ final class SpaceTimeSearch {
                 if (dir == 2) {
                     continue;
                 }
-                int child = nt * cells + n;
                 // a step in a passage costs one more: robots get out of passages rather than wait in them
                 // and two more where a passage lets robots out (they wait elsewhere, not in front of its end)
-                int cost = g[node] + (n == goal && cell == goal ? 0 : 1) + (map.passage(n) >= 0 ? 1 : 0)
+                int cost = gNode + (n == goal && cell == goal ? 0 : 1) + (map.passage(n) >= 0 ? 1 : 0)
                         + (outlet(robot, n, nt) ? 2 : 0);
-                if (closed[child] == stamp || (seen[child] == stamp && g[child] <= cost)) {
+                if (seenBefore && (cm & COST) <= cost) {
                     continue;
                 }
-                seen[child] = stamp;
-                g[child] = cost;
+                mark[child] = seenNow | cost;
                 parent[child] = node;
                 heading[child] = (byte) dir;
                 push(child, cost + h(distance, n), nt);
             }
         }
+        exhausted = heapSize == 0;
         return null;
+    }
+
+    /**
+     * @return whether the last search that found no path tried every step it could take (rather than running out
+     *         of its budget): then no path at all reaches the window's end, whatever the goal, as the cells a
+     *         robot may enter do not depend on its goal (but for a cart on the goal, see {@code blocked})
+     */
+    boolean exhausted() {
+        return exhausted;
     }
 
     /** How deep in a chain of pushes the next searches are (a pushed robot needs a way out, not the best path). */
     void depth(int depth) {
         this.depthHint = depth;
+    }
+
+    /**
+     * Cells the next searches keep out of for the whole window (robots standing there that cannot be pushed), or
+     * null for none.
+     */
+    void immovable(IntPredicate cells) {
+        this.immovable = cells;
     }
 
     /** The passages' claims this round (the planner's, read at every search). */
@@ -168,6 +201,9 @@ final class SpaceTimeSearch {
 
     /** Whether robots come out of a passage into this cell at step t (nobody may wait there then). */
     private boolean outlet(int robot, int cell, int t) {
+        if (!map.passageExit(cell)) {
+            return false;
+        }
         for (int n : map.neighbours(cell)) {
             int run = map.passage(n);
             if (run >= 0) {

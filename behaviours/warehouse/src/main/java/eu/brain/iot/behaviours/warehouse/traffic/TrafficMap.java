@@ -25,6 +25,8 @@ public final class TrafficMap {
     private final int[] runPos;
     /** Each passage's exits: the open cell beyond end A, the one beyond end B. */
     private int[][] runExits;
+    /** Whether a cell is the exit of a passage (the open cell beyond one of its ends). */
+    private final boolean[] exit;
     private final int[][] neighbours;
     private final Grid grid;
 
@@ -63,6 +65,11 @@ public final class TrafficMap {
         runPos = new int[cells];
         Arrays.fill(runOf, -1);
         markThroughLanes();
+        exit = new boolean[cells];
+        for (int[] ends : runExits) {
+            exit[ends[0]] = true;
+            exit[ends[1]] = true;
+        }
     }
 
     /**
@@ -196,6 +203,11 @@ public final class TrafficMap {
     /** @return the open cell beyond end A (side 0) or end B (side 1) of a passage */
     int passageExit(int passage, int side) {
         return runExits[passage][side];
+    }
+
+    /** @return whether the cell is the exit of a passage (the open cell beyond one of its ends) */
+    boolean passageExit(int c) {
+        return exit[c];
     }
 
     /** The passable neighbours (N, E, S, W order); do not modify the array. */

@@ -191,4 +191,39 @@ class FleetPlannerTest {
         planner.plan();
         assertThat(planner.path(2)[1]).isEqualTo(map.cell(2, 1));
     }
+
+    /** A round's search work in a packed room: far below what learning unpushable robots one retry at a time took. */
+    private static final long MAX_EXPANSIONS_PER_ROUND = 400_000;
+
+    @Test
+    void aRoomPackedWithRobotsIsPlannedWithBoundedWork() {
+        // 36 of 40 cells taken, everyone bound for the far side of the door: chains of pushes six deep
+        String rows = String.join("\n",
+                "############",
+                "#..........#",
+                "#..........#",
+                "#..........#",
+                "#..........#",
+                "#####D######",
+                "#..........#",
+                "#..........#",
+                "############");
+        TrafficMap map = TrafficMap.parse(rows);
+        int[] start = new int[36];
+        for (int r = 0; r < start.length; r++) {
+            start[r] = map.cell(1 + r % 10, 1 + r / 10);
+        }
+        PlanRun run = new PlanRun(rows, 16, start);
+        long worst = 0;
+        for (int s = 0; s < 60; s++) {
+            for (int r = 0; r < start.length; r++) {
+                run.goal[r] = map.cell(1 + r % 10, 6 + (r / 10) % 2);
+            }
+            long before = run.planner.expansions();
+            run.step();
+            worst = Math.max(worst, run.planner.expansions() - before);
+        }
+        assertThat(run.violations).isEmpty();
+        assertThat(worst).as("search nodes expanded in the costliest round").isLessThan(MAX_EXPANSIONS_PER_ROUND);
+    }
 }
