@@ -136,11 +136,11 @@ final class AsyncEventBus implements EventBus {
     }
 
     /**
-     * An event from another node: routed to local behaviours only (never to a forwarder), never waiting.
-     *
-     * @see eu.brain.iot.eventing.spi.RemoteEvents#tryDeliverRemote
+     * An event from another node: routed to local behaviours only (never to a forwarder), never waiting; with
+     * {@code behavioursOnly}, not accepted when no behaviour takes it (RemoteEvents#tryDeliverRemoteToBehaviours).
      */
-    boolean publishRemote(String eventType, List<String> typeNames, Map<String, Object> eventData, Runnable done) {
+    boolean publishRemote(String eventType, List<String> typeNames, Map<String, Object> eventData, Runnable done,
+            boolean behavioursOnly) {
         if (eventType == null || eventType.isEmpty() || eventData == null || done == null) {
             throw new IllegalArgumentException("tryDeliverRemote: eventType, eventData and done are required, got "
                     + "eventType=" + eventType);
@@ -153,7 +153,7 @@ final class AsyncEventBus implements EventBus {
         if (targets.length > 0) {
             return send(targets, route, snapshot, false, done);
         }
-        return unhandled(table, route, snapshot, null, names, false, done);
+        return !behavioursOnly && unhandled(table, route, snapshot, null, names, false, done);
     }
 
     /**

@@ -275,7 +275,13 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
     @Override
     public boolean tryDeliverRemote(String eventType, List<String> typeNames, Map<String, Object> eventData,
             Runnable done) {
-        return bus.publishRemote(eventType, typeNames, eventData, done);
+        return bus.publishRemote(eventType, typeNames, eventData, done, false);
+    }
+
+    @Override
+    public boolean tryDeliverRemoteToBehaviours(String eventType, List<String> typeNames,
+            Map<String, Object> eventData, Runnable done) {
+        return bus.publishRemote(eventType, typeNames, eventData, done, true);
     }
 
     @Override

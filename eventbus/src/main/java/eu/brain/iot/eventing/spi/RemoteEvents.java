@@ -33,4 +33,13 @@ public interface RemoteEvents {
      *         queued and {@code done} will not run; offer the event again later
      */
     boolean tryDeliverRemote(String eventType, List<String> typeNames, Map<String, Object> eventData, Runnable done);
+
+    /**
+     * As {@link #tryDeliverRemote}, but an event that no local behaviour takes now is not accepted either
+     * ({@code false}: offer it again later): for a node whose behaviours are still coming up (restored from its
+     * installer's journal, installed from its configuration folder), which events sent to it before it stopped may
+     * reach first. Since 1.2.
+     */
+    boolean tryDeliverRemoteToBehaviours(String eventType, List<String> typeNames, Map<String, Object> eventData,
+            Runnable done);
 }

@@ -89,7 +89,13 @@ public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
     @Override
     public boolean tryDeliverRemote(String eventType, List<String> typeNames, Map<String, Object> eventData,
             Runnable done) {
-        return bus.publishRemote(eventType, typeNames, eventData, done);
+        return bus.publishRemote(eventType, typeNames, eventData, done, false);
+    }
+
+    @Override
+    public boolean tryDeliverRemoteToBehaviours(String eventType, List<String> typeNames,
+            Map<String, Object> eventData, Runnable done) {
+        return bus.publishRemote(eventType, typeNames, eventData, done, true);
     }
 
     public void removeBehaviour(long id) {

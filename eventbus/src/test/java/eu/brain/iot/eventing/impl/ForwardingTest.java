@@ -142,4 +142,13 @@ class ForwardingTest {
         assertThat(done.get()).isEqualTo(1);
         assertThat(bus.statistics("x.Unknown").unhandled).isEqualTo(1);
     }
+
+    @Test
+    void toBehavioursOnlyARemoteEventNoBehaviourTakesIsNotAccepted() {
+        AtomicInteger done = new AtomicInteger();
+        assertThat(bus.tryDeliverRemoteToBehaviours("x.Unknown", List.of(), Map.of("a", 1), done::incrementAndGet))
+                .as("offered again later").isFalse();
+        assertThat(done.get()).isZero();
+        assertThat(bus.statistics("x.Unknown").unhandled).isZero();
+    }
 }

@@ -62,12 +62,13 @@ public final class FabricNode implements AutoCloseable {
     private volatile List<InterestEntry> localInterest = List.of();
     private volatile boolean closed;
     private volatile boolean joined;
-    /** A connection attempt is scheduled (inbound thread only). */
+    /** Inbound thread only: a connection attempt is scheduled; the broker's unreachability was logged (until the
+     *  next connection); the node was connected before. */
     private boolean connecting;
-    /** The broker's unreachability was logged, until the next connection (inbound thread only). */
     private boolean warnedUnreachable;
-    /** Whether the node was connected before (inbound thread only). */
     private boolean joinedBefore;
+    /** When this node was made: for {@link Inbox#STARTING_NANOS} after, events wait for the behaviours they are for. */
+    private final long madeNanos = System.nanoTime();
 
     /**
      * @throws IOException when the key cannot be read or the state folder not used: the node does not join
@@ -104,8 +105,7 @@ public final class FabricNode implements AutoCloseable {
                     }
                 });
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
-                this::node, this::outbox,
-                destination -> (type, names, data) -> forward(destination, type, names, data));
+                this::node, this::outbox, to -> (type, names, data) -> forward(to, type, names, data));
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
             @Override
@@ -303,7 +303,8 @@ public final class FabricNode implements AutoCloseable {
         }
         Inbox inbox = inboxes.get(from);
         if (inbox == null) {
-            inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats);
+            inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats,
+                    () -> System.nanoTime() - madeNanos < Inbox.STARTING_NANOS);
             inboxes.put(from, inbox);
         }
         long dupsBefore = stats.duplicates.sum();

@@ -12,6 +12,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.TreeMap;
 import java.util.TreeSet;
+import java.util.function.BooleanSupplier;
 
 import eu.brain.iot.eventing.spi.RemoteEvents;
 import eu.brain.iot.federation.impl.Wire.Event;
@@ -32,6 +33,12 @@ import eu.brain.iot.federation.impl.Wire.Event;
  */
 final class Inbox {
 
+    /**
+     * How long after its start a node keeps an event that none of its behaviours takes yet, offering it again, before
+     * the bus's unhandled rules apply: its behaviours may still be coming up (restored from the installer's journal,
+     * installed from the configuration folder) when events sent to it before it stopped arrive.
+     */
+    static final long STARTING_NANOS = java.util.concurrent.TimeUnit.SECONDS.toNanos(10);
     /** Events kept that came before an earlier one; beyond this they are dropped (and sent again later). */
     static final int MAX_EARLY = 50_000;
 
@@ -41,6 +48,7 @@ final class Inbox {
 
     private final FileChannel window;
     private final NodeStats stats;
+    private final BooleanSupplier starting;
 
     /** The publisher's sequence stream (written by the inbound thread under the monitor). */
     private String epoch;
@@ -56,9 +64,15 @@ final class Inbox {
     /** Set when the node stops (guarded by this). */
     private boolean closed;
 
-    Inbox(String publisher, Path windowFile, NodeStats stats) throws IOException {
+    /**
+     * @param starting while true, an event no local behaviour takes yet waits (this node's behaviours are still
+     *                 coming up, and events sent before it stopped may reach it first); then the bus's unhandled
+     *                 rules apply
+     */
+    Inbox(String publisher, Path windowFile, NodeStats stats, BooleanSupplier starting) throws IOException {
         this.publisher = publisher;
         this.stats = stats;
+        this.starting = starting;
         Files.createDirectories(windowFile.toAbsolutePath().getParent());
         if (Files.exists(windowFile)) {
             String[] parts = Files.readString(windowFile, StandardCharsets.US_ASCII).trim().split(" ");
@@ -79,7 +93,8 @@ final class Inbox {
     /**
      * Take a batch's events, then offer what is next in order to the bus.
      *
-     * @return whether events wait because the bus refused one (the caller offers again later)
+     * @return whether events wait because the bus refused one, or none of this node's behaviours takes it yet while
+     *         it is starting (the caller offers again later)
      */
     boolean accept(String batchEpoch, List<Event> events, RemoteEvents bus, Runnable onDone) {
         if (!batchEpoch.equals(epoch)) {
@@ -117,7 +132,9 @@ final class Inbox {
             String forEpoch = epoch;
             Map<String, Object> data = e.data();
             data.putIfAbsent("sourceNode", publisher);
-            if (!bus.tryDeliverRemote(e.type(), e.types(), data, () -> completed(forEpoch, seq, onDone))) {
+            Runnable done = () -> completed(forEpoch, seq, onDone);
+            if (!(starting.getAsBoolean() ? bus.tryDeliverRemoteToBehaviours(e.type(), e.types(), data, done)
+                    : bus.tryDeliverRemote(e.type(), e.types(), data, done))) {
                 return true;
             }
             early.pollFirstEntry();

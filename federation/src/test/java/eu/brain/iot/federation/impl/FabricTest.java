@@ -270,6 +270,39 @@ class FabricTest extends FabricTestBase {
                 .isEqualTo(a.bus.statistics(MOVED).unhandled);
     }
 
+    /**
+     * A receiving node is killed with events on their way to it, and started again without its behaviour, which
+     * comes a little later (as one restored from the installer's journal, or installed from the configuration folder):
+     * the events sent again before it is back wait for it on that node, none counted unhandled there.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void eventsReachingARestartedNodeBeforeItsBehaviourWaitForIt(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder r = new Recorder();
+        b.addBehaviour(r, null, MOVED);
+        awaitInterest(a, b, 1);
+        r.dieWith(b);
+        nodes.remove(b);
+        int total = 200;
+        for (int i = 1; i <= total; i++) {
+            a.bus.deliver(new Moved("r1", i)); // a has not seen b go: kept for it
+        }
+        await("all kept for b").atMost(DEADLINE).until(() -> a.statsOf("b").backlog() == total);
+
+        TestNode b2 = node("b"); // the same name and state folder, its behaviour not back yet
+        await("sent again to b").atMost(DEADLINE).until(() -> a.statsOf("b").resent() >= total);
+        Recorder r2 = new Recorder();
+        b2.addBehaviour(r2, null, MOVED);
+
+        await().atMost(DEADLINE).untilAsserted(() -> assertThat(r2.got.size() + " received, backlog "
+                + a.statsOf("b").backlog()).isEqualTo(total + " received, backlog 0"));
+        assertThat(r2.seqs()).isEqualTo(range(1, total));
+        assertThat(b2.bus.statistics(MOVED).unhandled).as("none unhandled on the restarted node").isZero();
+    }
+
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
     void aNodeThatDiesLosesItsInterestByItsLastWill(Broker.Kind kind) throws Exception {
