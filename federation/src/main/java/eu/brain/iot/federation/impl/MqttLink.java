@@ -92,6 +92,8 @@ final class MqttLink {
         }
         if (settings.tls()) {
             options.setSocketFactory(sslContext(settings).getSocketFactory());
+        } else {
+            options.setSocketFactory(new NoDelaySockets());
         }
     }
 
