@@ -7,7 +7,6 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.TimeUnit;
 
 import org.osgi.service.log.Logger;
@@ -46,9 +45,6 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  */
 final class AsyncEventBus implements EventBus {
 
-    /** Set while this thread is inside the policy: an event it publishes there is not put to the policy again. */
-    private static final ThreadLocal<Boolean> ASKING = ThreadLocal.withInitial(() -> Boolean.FALSE);
-
     private final String sourceNode;
     private volatile int queueCapacity;
     private volatile long overflowTimeoutNanos;
@@ -60,7 +56,7 @@ final class AsyncEventBus implements EventBus {
     private volatile RouteTable routes = new RouteTable(List.of());
     private final EventHold hold = new EventHold();
     private volatile UnhandledEventPolicy policy;
-    private final AtomicBoolean policyFailureLogged = new AtomicBoolean();
+    private final PolicyAsker asker;
     private final ConcurrentHashMap<String, EventTypeCounters> counters = new ConcurrentHashMap<>();
 
     AsyncEventBus(String sourceNode, int queueCapacity, long overflowTimeoutMillis, DeliveryPool.Settings delivery,
@@ -70,6 +66,7 @@ final class AsyncEventBus implements EventBus {
         this.queueCapacity = queueCapacity;
         this.overflowTimeoutNanos = TimeUnit.MILLISECONDS.toNanos(Math.max(0, overflowTimeoutMillis));
         this.log = log;
+        this.asker = new PolicyAsker(log);
         this.pool = new DeliveryPool(delivery, log);
         pool.start();
     }
@@ -212,7 +209,7 @@ final class AsyncEventBus implements EventBus {
                 return lastResortOrUnhandled(table, route, snapshot, wait, done);
             }
             if (decided == null) {
-                decided = ask(current, route);
+                decided = asker.ask(current, route);
             }
             if (decided == Disposition.UNHANDLED) {
                 countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()
@@ -287,27 +284,6 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
-    /** Ask the policy, once per event; an event published from inside the policy is not put to it again. */
-    private Disposition ask(UnhandledEventPolicy current, Route route) {
-        if (ASKING.get()) {
-            return Disposition.LAST_RESORT;
-        }
-        ASKING.set(Boolean.TRUE);
-        try {
-            Disposition d = current.unhandled(route.counters().eventType, route.typeNames());
-            return d == null ? Disposition.LAST_RESORT : d;
-        } catch (RuntimeException e) {
-            if (policyFailureLogged.compareAndSet(false, true)) {
-                log.error("The unhandled-event policy {} failed on an event of type {}; such events follow the "
-                        + "bus's own rules (consumers of last resort, else counted as unhandled). Further failures "
-                        + "are not logged.", current.getClass().getName(), route.counters().eventType, e);
-            }
-            return Disposition.LAST_RESORT;
-        } finally {
-            ASKING.set(Boolean.FALSE);
-        }
-    }
-
     /** The bus's own rules for an event no behaviour takes: consumers of last resort, else counted unhandled. */
     private boolean lastResortOrUnhandled(RouteTable table, Route route, Object snapshot, boolean wait,
             Runnable done) {
@@ -342,38 +318,76 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
-    /**
-     * Start delivering to a behaviour. The held events it takes are moved into its queue, in hold order, before
-     * the new table is published: every publisher that can reach the behaviour queues behind them.
-     */
+    /** Start delivering to a behaviour (see {@link #newTable}). */
     void addConsumer(ConsumerSpec spec) {
         ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log,
                 spec.forwarder() ? new Orphans(this, log) : null);
+        Runnable after;
+        synchronized (consumersLock) {
+            after = newTable(channels.put(spec.serviceId(), channel));
+        }
+        after.run();
+    }
+
+    /** Stop delivering to a behaviour; its queued events are discarded and counted, a forwarder's kept (below). */
+    void removeConsumer(long serviceId) {
+        Runnable after;
+        synchronized (consumersLock) {
+            ConsumerChannel channel = channels.remove(serviceId);
+            if (channel == null) {
+                return;
+            }
+            after = newTable(channel);
+        }
+        after.run();
+    }
+
+    /**
+     * Publish the table of the current channels (under the lock), closing the one that left, if any. The held
+     * events the new table routes are moved into their queues before it is published, a left forwarder's queued
+     * events among them: every publisher that can reach those behaviours queues behind them, and a forwarder's
+     * events that nobody takes now stay in the hold ahead of every event published after.
+     *
+     * @return what to do once the lock is released
+     */
+    private Runnable newTable(ConsumerChannel left) {
+        RouteTable next = new RouteTable(channels.values());
+        List<Held> queued = left == null ? List.of() : Orphans.held(left.closeAndTakeQueued());
+        queued.forEach(hold::append);
+        boolean madeReady = hold.size() > 0 && hold.handOver(held -> targetsIn(next, held));
+        List<Held> orphans = hold.stillHeld(queued);
+        routes = next;
+        UnhandledEventPolicy current = policy;
+        consumersLock.notifyAll(); // publishers waiting for room in the hold: re-check
+        return () -> {
+            if (madeReady) {
+                pool.signal();
+            }
+            settleOrphans(orphans, current);
+        };
+    }
+
+    /**
+     * A left forwarder's events that nobody takes now: the policy is asked about them, once per type and outside
+     * the lock, as about any unhandled event; they stay held if it says so, else follow the bus's own rules.
+     */
+    private void settleOrphans(List<Held> orphans, UnhandledEventPolicy current) {
+        if (orphans.isEmpty()) {
+            return;
+        }
+        Map<String, Disposition> decided = asker.askPerType(current, orphans,
+                h -> routeOf(routes, h.type(), h.counters().eventType, null));
         boolean madeReady;
         synchronized (consumersLock) {
-            ConsumerChannel old = channels.put(spec.serviceId(), channel);
-            RouteTable next = new RouteTable(channels.values());
-            madeReady = hold.size() > 0 && hold.handOver(held -> targetsIn(next, held));
-            routes = next;
-            if (old != null) {
-                old.close();
-            }
-            consumersLock.notifyAll(); // publishers waiting for room in the hold: re-check
+            List<Held> released = hold.take(orphans, h -> decided.get(h.counters().eventType) != Disposition.HOLD);
+            RouteTable table = routes;
+            madeReady = EventHold.dispatch(released, held -> targetsIn(table, held), table.lastResort,
+                    held -> decided.get(held.counters().eventType) != Disposition.UNHANDLED,
+                    counters -> logUnhandled(counters, "nothing takes them since the node they were queued for left"));
+            consumersLock.notifyAll();
         }
         if (madeReady) {
             pool.signal();
-        }
-    }
-
-    /** Stop delivering to a behaviour; its queued events are discarded and counted. */
-    void removeConsumer(long serviceId) {
-        synchronized (consumersLock) {
-            ConsumerChannel channel = channels.remove(serviceId);
-            if (channel != null) {
-                routes = new RouteTable(channels.values());
-                channel.close();
-                consumersLock.notifyAll();
-            }
         }
     }
 
@@ -396,20 +410,9 @@ final class AsyncEventBus implements EventBus {
                 return; // replaced by a higher-ranked policy first: that one keeps the hold
             }
             policy = null;
-            List<Held> released = hold.removeAll();
             RouteTable table = routes;
-            for (Held held : released) {
-                ConsumerChannel[] to = targetsIn(table, held);
-                if (to.length == 0) {
-                    to = table.lastResort;
-                }
-                if (to.length > 0) {
-                    madeReady |= EventHold.enqueue(held, to);
-                } else {
-                    held.counters().unhandled.increment();
-                    logUnhandled(held.counters(), "the unhandled-event policy that held them went away");
-                }
-            }
+            madeReady = EventHold.dispatch(hold.removeAll(), held -> targetsIn(table, held), table.lastResort,
+                    held -> true, counters -> logUnhandled(counters, "the unhandled-event policy that held them went away"));
             consumersLock.notifyAll();
         }
         if (madeReady) {
@@ -480,10 +483,8 @@ final class AsyncEventBus implements EventBus {
     }
 
     List<EventTypeStatistics> eventTypes() {
-        List<EventTypeStatistics> list = new ArrayList<>();
-        counters.values().forEach(c -> list.add(c.snapshot()));
-        list.sort(Comparator.comparing(s -> s.eventType));
-        return list;
+        return new ArrayList<>(counters.values().stream().map(EventTypeCounters::snapshot)
+                .sorted(Comparator.comparing((EventTypeStatistics s) -> s.eventType)).toList());
     }
 
     List<ConsumerStatistics> consumers() {
@@ -491,10 +492,8 @@ final class AsyncEventBus implements EventBus {
         synchronized (consumersLock) {
             current = new ArrayList<>(channels.values());
         }
-        List<ConsumerStatistics> list = new ArrayList<>();
-        current.forEach(c -> list.add(c.statistics()));
-        list.sort(Comparator.comparing((ConsumerStatistics s) -> s.consumer).thenComparingLong(s -> s.serviceId));
-        return list;
+        return new ArrayList<>(current.stream().map(ConsumerChannel::statistics).sorted(Comparator
+                .comparing((ConsumerStatistics s) -> s.consumer).thenComparingLong(s -> s.serviceId)).toList());
     }
 
 }

@@ -3,6 +3,7 @@ package eu.brain.iot.eventing.impl;
 import java.lang.invoke.MethodHandles;
 import java.lang.invoke.VarHandle;
 import java.util.ArrayList;
+import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
@@ -64,6 +65,11 @@ final class ConsumerChannel {
     private final StallPolicy stall;
 
     private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
+    /**
+     * For a forwarder: taken to queue, to take from the queue and to take what is left when it is closed, so that
+     * the events it leaves behind keep their order before those published after (see {@link #closeAndTakeQueued}).
+     */
+    private final Object forwarderLock = new Object();
     /** Slots reserved by publishers; incremented before an envelope is queued. */
     private final AtomicLong offered = new AtomicLong();
     /**
@@ -154,7 +160,20 @@ final class ConsumerChannel {
      *         {@link DeliveryPool#signal()}, once per event however many behaviours it reached
      */
     boolean enqueue(Envelope envelope) {
-        queue.offer(envelope);
+        if (orphans != null) {
+            boolean queued;
+            synchronized (forwarderLock) {
+                queued = !closed && queue.offer(envelope);
+            }
+            if (!queued) {
+                // The forwarder left after this publisher routed: published again now, before its next event
+                // (outside the lock, which the bus takes under its own).
+                orphans.accept(envelope);
+                return false;
+            }
+        } else {
+            queue.offer(envelope);
+        }
         boolean madeReady = !scheduled && SCHEDULED.compareAndSet(this, false, true);
         if (madeReady) {
             pool.ready(this);
@@ -196,13 +215,38 @@ final class ConsumerChannel {
         }
     }
 
+    /**
+     * Close a forwarder and take its queued events, in order (under the bus's lock, before the new route table is
+     * published): from then on nothing is queued to it, and it delivers no more than an event it had taken already.
+     * For a behaviour, just {@link #close()}: its queued events are discarded.
+     */
+    List<Envelope> closeAndTakeQueued() {
+        close();
+        List<Envelope> taken = new ArrayList<>();
+        if (orphans != null) {
+            synchronized (forwarderLock) {
+                for (Envelope e = queue.poll(); e != null; e = queue.poll()) {
+                    taken.add(e);
+                }
+            }
+        }
+        return taken;
+    }
+
+    /** A forwarder's next event, none once closed: closing and taking its queue cannot interleave with this. */
+    private Envelope pollForwarder() {
+        synchronized (forwarderLock) {
+            return closed ? null : queue.poll();
+        }
+    }
+
     /** One turn, run by the worker that took this channel from the run queue (the token holder). */
     void runTurn() {
         Thread worker = Thread.currentThread();
         runner = worker;
         try {
             for (int i = 0; i < BATCH && !closed; i++) {
-                Envelope envelope = queue.poll();
+                Envelope envelope = orphans == null ? queue.poll() : pollForwarder();
                 if (envelope == null) {
                     break;
                 }

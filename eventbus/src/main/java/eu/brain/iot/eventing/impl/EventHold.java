@@ -2,11 +2,16 @@ package eu.brain.iot.eventing.impl;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Collections;
+import java.util.IdentityHashMap;
 import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.function.Consumer;
 import java.util.function.Function;
+import java.util.function.Predicate;
 
 import eu.brain.iot.eventing.spi.HeldType;
 
@@ -72,18 +77,68 @@ final class EventHold {
         return madeReady;
     }
 
-    /** Take the held events of one type out of the hold. */
-    List<Held> remove(String eventType) {
+    /**
+     * Held events taken out of the hold, by the bus's own rules: to the behaviours that take them now, else to the
+     * consumers of last resort where allowed, else counted as unhandled (and told to {@code unhandled}).
+     *
+     * @return whether a behaviour became ready to run
+     */
+    static boolean dispatch(List<Held> released, Function<Held, ConsumerChannel[]> targets,
+            ConsumerChannel[] lastResort, Predicate<Held> lastResortAllowed, Consumer<EventTypeCounters> unhandled) {
+        boolean madeReady = false;
+        for (Held held : released) {
+            ConsumerChannel[] to = targets.apply(held);
+            if (to.length == 0 && lastResortAllowed.test(held)) {
+                to = lastResort;
+            }
+            if (to.length > 0) {
+                madeReady |= enqueue(held, to);
+            } else {
+                held.counters.unhandled.increment();
+                unhandled.accept(held.counters);
+            }
+        }
+        return madeReady;
+    }
+
+    /** Those of {@code candidates} still held, in hold order. */
+    List<Held> stillHeld(List<Held> candidates) {
+        if (candidates.isEmpty()) {
+            return List.of();
+        }
+        Set<Held> wanted = identities(candidates);
+        return queue.stream().filter(wanted::contains).toList();
+    }
+
+    /** Take those of {@code candidates} still held that match out of the hold, in hold order. */
+    List<Held> take(List<Held> candidates, Predicate<Held> which) {
+        Set<Held> among = identities(candidates);
+        return take(held -> among.contains(held) && which.test(held));
+    }
+
+    private static Set<Held> identities(List<Held> events) {
+        Set<Held> set = Collections.newSetFromMap(new IdentityHashMap<>());
+        set.addAll(events);
+        return set;
+    }
+
+    /** Take the held events that match out of the hold, in hold order. */
+    List<Held> take(Predicate<Held> which) {
         List<Held> removed = new ArrayList<>();
         for (Iterator<Held> it = queue.iterator(); it.hasNext();) {
             Held held = it.next();
-            if (held.counters.eventType.equals(eventType)) {
+            if (which.test(held)) {
                 it.remove();
                 held.counters.held.decrement();
                 removed.add(held);
             }
         }
         return removed;
+    }
+
+    /** Take the held events of one type out of the hold. */
+    List<Held> remove(String eventType) {
+        return take(held -> held.counters.eventType.equals(eventType));
     }
 
     /** Take every held event out of the hold, in hold order. */

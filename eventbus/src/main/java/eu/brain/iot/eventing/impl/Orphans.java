@@ -1,5 +1,6 @@
 package eu.brain.iot.eventing.impl;
 
+import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
 
@@ -7,13 +8,15 @@ import org.osgi.service.log.Logger;
 
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.impl.EventHold.Held;
 
 /**
- * The events still queued for a forwarder when it goes away (its node left the fabric, or no longer takes them):
- * published again, never waiting, to whoever takes them now (a local behaviour, another node, or the unhandled-event
- * policy, which holds them for the behaviour it installs). An event that finds every queue full is counted as
- * discarded. Runs on the thread that retires the forwarder's queue (a delivery worker, or a publisher that met the
- * closed queue); keeps no state.
+ * The events queued for a forwarder when it goes away (its node left the fabric, or no longer takes them). Those
+ * queued when it leaves the route table keep their place ({@link #held}: the bus hands them over in the same step);
+ * one a publisher routes to it just after, or one left when the bus closes, is published again here, never waiting,
+ * to whoever takes it now (a local behaviour, another node, or the unhandled-event policy, which holds it for the
+ * behaviour it installs). An event that finds every queue full is counted as discarded. Runs on the publisher's
+ * thread or the one that retires the forwarder's queue; keeps no state.
  */
 final class Orphans implements Consumer<Envelope> {
 
@@ -23,6 +26,13 @@ final class Orphans implements Consumer<Envelope> {
     Orphans(EventBus bus, Logger log) {
         this.bus = bus;
         this.log = log;
+    }
+
+    /** A forwarder's queued events as held events, to join the hold in their order (see the bus's removal). */
+    static List<Held> held(List<Envelope> queued) {
+        long now = System.currentTimeMillis();
+        return queued.stream().map(e -> new Held(e.payload, e.payload instanceof BrainIoTEvent ? e.payload.getClass()
+                : null, e.counters, now, null)).toList();
     }
 
     @Override

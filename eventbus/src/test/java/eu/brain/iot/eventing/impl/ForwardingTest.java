@@ -136,6 +136,48 @@ class ForwardingTest {
     }
 
     @Test
+    void eventsQueuedForAForwarderThatGoesAwayKeepTheirPlaceBeforeLaterOnes() throws Exception {
+        EventHoldTest.Policy policy = new EventHoldTest.Policy(); // holds every unhandled event
+        bus.policy(policy);
+        CountDownLatch inside = new CountDownLatch(1);
+        CountDownLatch leave = new CountDownLatch(1);
+        Recorder forwarded = new Recorder();
+        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
+            forwarded.forward(type, names, data);
+            inside.countDown();
+            boolean interrupted = false;
+            while (leave.getCount() > 0) { // a forwarder that does not return at once when its node leaves
+                try {
+                    leave.await();
+                } catch (InterruptedException e) {
+                    interrupted = true;
+                }
+            }
+            if (interrupted) {
+                Thread.currentThread().interrupt();
+            }
+        }, "B", null, Moved.class.getName());
+        for (int i = 1; i <= 5; i++) {
+            bus.deliver(new Moved("r" + i));
+        }
+        assertThat(inside.await(20, TimeUnit.SECONDS)).isTrue();
+
+        bus.removeBehaviour(id); // r2..r5 still queued for it
+        for (int i = 6; i <= 8; i++) {
+            bus.deliver(new Moved("r" + i)); // held: nobody takes them now
+        }
+        leave.countDown();
+        List<String> seen = new CopyOnWriteArrayList<>();
+        bus.addForwarder((EventForwarder) (type, names, data) -> seen.add((String) data.get("robotId")), "B", null,
+                Moved.class.getName());
+
+        await().atMost(DEADLINE).until(() -> seen.size() == 7);
+        assertThat(forwarded.got).containsExactly(Moved.class.getName() + ":r1");
+        assertThat(seen).as("the events queued for the forwarder that left come before those published after")
+                .containsExactly("r2", "r3", "r4", "r5", "r6", "r7", "r8");
+    }
+
+    @Test
     void aRemoteEventNoBehaviourTakesIsDoneAtOnce() {
         AtomicInteger done = new AtomicInteger();
         assertThat(bus.tryDeliverRemote("x.Unknown", List.of(), Map.of("a", 1), done::incrementAndGet)).isTrue();
