@@ -35,6 +35,10 @@ class StallPolicyTest {
     static final Duration DEADLINE = Duration.ofSeconds(20);
     static final int CAPACITY = 4;
     static final long OVERFLOW_MILLIS = 200;
+    static final long SLOW_OVERFLOW_MILLIS = 150;
+    static final long SLOW_NOTIFY_MILLIS = 30;
+    static final int PUBLISHERS = 8;
+    static final int EVENTS_EACH = 10;
 
     final RecordingLogger log = new RecordingLogger();
     final AtomicLong ids = new AtomicLong();
@@ -144,25 +148,28 @@ class StallPolicyTest {
     @Test
     void deliverStillThrowsWhenASlowBehaviourMakesNoRoomForItInTime() throws Exception {
         bus.close();
-        bus = bus(50);
+        // A notify of 30 ms against an overflow timeout five times longer: under a loaded machine the behaviour
+        // still takes an event well within the timeout (never stalled), while eight publishers share one freed
+        // slot per notify, so that some of them find no room within the timeout.
+        bus = bus(SLOW_OVERFLOW_MILLIS);
         AtomicInteger got = new AtomicInteger();
         SmartBehaviour<Tick> slow = tick -> {
             try {
-                Thread.sleep(30); // slower than four publishers: some of them find no room within 50 ms
+                Thread.sleep(SLOW_NOTIFY_MILLIS);
             } catch (InterruptedException e) {
                 Thread.currentThread().interrupt();
             }
             got.incrementAndGet();
         };
         String name = add(slow);
-        ExecutorService publishers = Executors.newFixedThreadPool(4);
+        ExecutorService publishers = Executors.newFixedThreadPool(PUBLISHERS);
         CountDownLatch go = new CountDownLatch(1);
         List<Future<Integer>> refused = new ArrayList<>();
-        for (int p = 0; p < 4; p++) {
+        for (int p = 0; p < PUBLISHERS; p++) {
             refused.add(publishers.submit(() -> {
                 go.await();
                 int count = 0;
-                for (int i = 0; i < 20; i++) {
+                for (int i = 0; i < EVENTS_EACH; i++) {
                     try {
                         bus.deliver(new Tick(i));
                     } catch (EventBusOverflowException e) {
@@ -182,7 +189,7 @@ class StallPolicyTest {
         assertThat(total).as("a slow behaviour pushes back: publishers that found no room were refused")
                 .isPositive();
         assertThat(stats(name).discarded).as("it kept taking events: never stalled, nothing discarded").isZero();
-        int accepted = 80 - total;
+        int accepted = PUBLISHERS * EVENTS_EACH - total;
         await().atMost(DEADLINE).until(() -> got.get() == accepted);
     }
 }
