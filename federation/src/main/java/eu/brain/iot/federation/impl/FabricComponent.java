@@ -217,6 +217,13 @@ public final class FabricComponent implements Host, FabricMonitor {
         }
     }
 
+    /** Which devices this node's edge owns, as its install offers tell ({@link EdgeOwnedDevices}); null: none. */
+    void ownedDevices(OwnedDevices owned) {
+        if (node != null && node.installer() instanceof FabricInstaller f) {
+            f.ownedDevices(owned);
+        }
+    }
+
     /**
      * The node's own installer (any but the fabric's): while there is one and this node is a member of a fabric,
      * the fabric's installer is registered, ranked above it, so that the BMS asks the fabric which node installs.
