@@ -10,6 +10,8 @@ import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 
+import eu.brain.iot.federation.api.FabricProperties;
+
 /**
  * The dashboard's consumer registers exactly {@link ConsumedTypes#CONSUMED}, which holds none of the behaviours'
  * triggers (the BMS would otherwise never install them). The browser tests check the same against the behaviour
@@ -27,5 +29,17 @@ class ConsumedTypesTest {
         assertThat(registered).containsExactlyInAnyOrderElementsOf(ConsumedTypes.CONSUMED);
         assertThat(registered).doesNotContainAnyElementsOf(ConsumedTypes.NEVER)
                 .noneMatch(t -> t.startsWith(ConsumedTypes.BEHAVIOUR_EVENTS) && !t.endsWith(".TransitionFired"));
+    }
+
+    /**
+     * The fabric does not announce the dashboard's consumer to other nodes (the federation's
+     * {@code LocalConsumersIntegrationTest} checks that it leaves such a consumer out): its interest would pull every
+     * node's commands and outcomes to each node that runs a dashboard.
+     */
+    @Test
+    void theBusListenerStaysLocalToItsNode() throws Exception {
+        String xml = Files.readString(Path.of("target/classes/OSGI-INF/eu.brain.iot.dashboard.BusListener.xml"));
+        assertThat(xml).as("the local-only property in " + xml)
+                .contains("name=\"" + FabricProperties.LOCAL_ONLY + "\" type=\"Boolean\" value=\"true\"");
     }
 }

@@ -1,8 +1,9 @@
 /**
- * The events the fabric's own components exchange between nodes: device leases.
+ * The events the fabric's own components exchange between nodes: device leases. Since 1.1, the service property by
+ * which a consumer on the bus stays local ({@link eu.brain.iot.federation.api.FabricProperties#LOCAL_ONLY}).
  */
 @Export
-@Version("1.0.0")
+@Version("1.1.0")
 package eu.brain.iot.federation.api;
 
 import org.osgi.annotation.bundle.Export;

@@ -41,6 +41,7 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.eventing.spi.RemoteEvents;
+import eu.brain.iot.federation.api.FabricProperties;
 import eu.brain.iot.federation.monitoring.api.FabricMonitor;
 import eu.brain.iot.federation.monitoring.api.FabricStatus;
 
@@ -114,9 +115,10 @@ public final class FabricComponent implements Host, FabricMonitor {
         this.nodeName = nodeName(config, context);
         this.fabricName = config.fabric_name();
         this.brokerUri = config.broker_uri();
+        // every behaviour that consumes something, but a monitoring consumer that stays local (the dashboard)
         Filter filter = FrameworkUtil.createFilter("(&(|(objectClass=" + SmartBehaviour.class.getName()
                 + ")(objectClass=" + UntypedSmartBehaviour.class.getName() + "))("
-                + SmartBehaviourNamespace.CONSUMED_PROPERTY + "=*))");
+                + SmartBehaviourNamespace.CONSUMED_PROPERTY + "=*)(!(" + FabricProperties.LOCAL_ONLY + "=true)))");
         this.behaviours = new ServiceTracker<>(context, filter, null) {
             @Override
             public InterestEntry addingService(ServiceReference<Object> ref) {
@@ -214,6 +216,13 @@ public final class FabricComponent implements Host, FabricMonitor {
                 }
             }
             node.localInterest(entries);
+        }
+    }
+
+    /** Which devices this node's edge owns, as its install offers tell ({@link EdgeOwnedDevices}); null: none. */
+    void ownedDevices(OwnedDevices owned) {
+        if (node != null && node.installer() instanceof FabricInstaller f) {
+            f.ownedDevices(owned);
         }
     }
 

@@ -35,10 +35,11 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
  * own installer (it is ranked higher), and it chooses which node of the fabric installs a behaviour.
  * <ul>
  * <li>{@link #find}: with no other node online, the local installer's answer as it is. Otherwise a signed
- * {@code bid} to every online node; each answers an {@code offer} from its local installer's {@code find} (from
- * memory) and its load (behaviours its installer installed). At the first of all answers or {@code install.bid.ms}
- * (a one-shot timer, no periodic tick) the rule of {@link InstallChoice} picks a node, and the answer is that node's
- * candidates, each naming it ({@link BehaviourCandidate#node}).</li>
+ * {@code bid} to every online node, naming the devices the event names (given with {@code find(types, event)},
+ * {@link DeviceNames}); each answers an {@code offer} from its local installer's {@code find} (from memory), its
+ * load (behaviours its installer installed) and which of those devices its edge owns. At the first of all answers
+ * or {@code install.bid.ms} (a one-shot timer, no periodic tick) the rule of {@link InstallChoice} picks a node, and
+ * the answer is that node's candidates, each naming it ({@link BehaviourCandidate#node}).</li>
  * <li>{@link #install}: for this node, the local installer. For another node, an {@code order}; that node's
  * federation asks its local installer and answers a {@code result}. The promise resolves once the result is a
  * success <em>and</em> that node's interest taking one of the request's types has arrived and its forwarder is
@@ -70,6 +71,7 @@ final class FabricInstaller implements BundleInstaller {
     private final Function<String, RemoteNode> node;
     private final Host host;
     private volatile BundleInstaller local;
+    private volatile OwnedDevices owned = OwnedDevices.NONE;
     private final InstallDesk desk;
 
     /** Bid deadlines waited at most when no node has offered a candidate yet ({@link #deadline}). */
@@ -82,6 +84,8 @@ final class FabricInstaller implements BundleInstaller {
     private static final class Bid {
         final String id;
         final List<String> types;
+        /** The devices the event names ({@link DeviceNames}). */
+        final List<String> devices;
         final Set<String> waiting;
         final Map<String, Offer> offers = new HashMap<>();
         final Deferred<List<BehaviourCandidate>> answer;
@@ -89,9 +93,11 @@ final class FabricInstaller implements BundleInstaller {
         /** The deadline passed with no candidate offered: the nodes still to answer are waited for longer. */
         boolean extended;
 
-        Bid(String id, List<String> types, Set<String> waiting, Deferred<List<BehaviourCandidate>> answer) {
+        Bid(String id, List<String> types, List<String> devices, Set<String> waiting,
+                Deferred<List<BehaviourCandidate>> answer) {
             this.id = id;
             this.types = types;
+            this.devices = devices;
             this.waiting = waiting;
             this.answer = answer;
         }
@@ -129,7 +135,12 @@ final class FabricInstaller implements BundleInstaller {
         this.nodes = nodes;
         this.node = node;
         this.host = host;
-        this.desk = new InstallDesk(settings, in, sending, this::local, host);
+        this.desk = new InstallDesk(settings, in, sending, this::local, () -> owned, host);
+    }
+
+    /** Which devices this node owns (its edge's), as its offers tell; {@code null}: none (no edge). */
+    void ownedDevices(OwnedDevices devices) {
+        this.owned = devices == null ? OwnedDevices.NONE : devices;
     }
 
     /** This node's own installer, or {@code null} when it has none (then it offers nothing to the fabric). */
@@ -172,6 +183,11 @@ final class FabricInstaller implements BundleInstaller {
 
     @Override
     public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes) {
+        return find(consumedTypes, null);
+    }
+
+    @Override
+    public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes, Map<String, ?> event) {
         BundleInstaller mine = local;
         if (mine == null) {
             return failed(Problem.CLOSED, "node " + self() + " has no Bundle Installer Service");
@@ -190,7 +206,8 @@ final class FabricInstaller implements BundleInstaller {
             }
         }
         Deferred<List<BehaviourCandidate>> answer = new Deferred<>();
-        return later(answer, () -> bid(List.copyOf(consumedTypes), online, answer));
+        List<String> devices = DeviceNames.of(event); // read now: the caller keeps its map
+        return later(answer, () -> bid(List.copyOf(consumedTypes), devices, online, answer));
     }
 
     @Override
@@ -234,15 +251,19 @@ final class FabricInstaller implements BundleInstaller {
 
     // ---- the asking node: inbound thread ---------------------------------------------------------------------
 
-    private void bid(List<String> types, List<String> online, Deferred<List<BehaviourCandidate>> answer) {
+    private void bid(List<String> types, List<String> devices, List<String> online,
+            Deferred<List<BehaviourCandidate>> answer) {
         Set<String> waiting = new HashSet<>(online);
         waiting.add(self());
-        Bid bid = new Bid(UUID.randomUUID().toString(), types, waiting, answer);
+        Bid bid = new Bid(UUID.randomUUID().toString(), types, devices, waiting, answer);
         bids.put(bid.id, bid);
-        desk.offer(types, offer -> offered(bid.id, offer));
+        desk.offer(types, devices, offer -> offered(bid.id, offer));
         for (String to : online) {
             try {
-                sending.send(to, desk.message(Wire.Install.BID, to, bid.id, m -> m.types = types));
+                sending.send(to, desk.message(Wire.Install.BID, to, bid.id, m -> {
+                    m.types = types;
+                    m.devices = devices.isEmpty() ? null : devices;
+                }));
             } catch (IOException e) {
                 bid.waiting.remove(to);
             } catch (InterruptedException e) {
@@ -261,7 +282,9 @@ final class FabricInstaller implements BundleInstaller {
         if (bid == null) {
             return; // decided already: a late answer
         }
-        bid.offers.put(offer.node(), offer);
+        // only the devices asked about count, whatever a node claims
+        bid.offers.put(offer.node(), new Offer(offer.node(), offer.candidates(), offer.load(),
+                offer.owns().stream().filter(bid.devices::contains).toList()));
         bid.waiting.remove(offer.node());
         if (bid.waiting.isEmpty()) {
             decide(bid);
@@ -274,8 +297,7 @@ final class FabricInstaller implements BundleInstaller {
      * until {@link #NO_OFFER_WAIT} deadlines have passed: deciding then would give the event up for nothing.
      */
     private void deadline(Bid bid) {
-        boolean offered = bid.offers.values().stream().anyMatch(o -> o.candidates() != null
-                && !o.candidates().isEmpty());
+        boolean offered = bid.offers.values().stream().anyMatch(Offer::offers);
         if (offered || bid.waiting.isEmpty() || bid.extended) {
             decide(bid);
             return;
@@ -302,17 +324,17 @@ final class FabricInstaller implements BundleInstaller {
             candidates.add(onNode(c, chosen.node()));
         }
         if (!chosen.node().equals(self())) {
-            host.info("Fabric {}: node {} installs {} for events of {} (lowest load {} among the offers of {}; {} "
-                    + "answered of {})", settings.fabric(), chosen.node(), candidates.get(0).symbolicName,
-                    bid.types.get(0), chosen.load(), offersOf(bid), bid.offers.size(),
+            host.info("Fabric {}: node {} installs {} for events of {} naming {} (owns {}, load {}; offers, best "
+                    + "first: {}; {} answered of {})", settings.fabric(), chosen.node(), candidates.get(0).symbolicName,
+                    bid.types.get(0), bid.devices, chosen.owns(), chosen.load(), offersOf(bid), bid.offers.size(),
                     bid.offers.size() + bid.waiting.size());
         }
         bid.answer.resolve(candidates);
     }
 
     private static List<String> offersOf(Bid bid) {
-        return bid.offers.values().stream().filter(o -> o.candidates() != null && !o.candidates().isEmpty())
-                .sorted(InstallChoice.ORDER).map(o -> o.node() + ":" + o.load()).toList();
+        return bid.offers.values().stream().filter(Offer::offers).sorted(InstallChoice.ORDER)
+                .map(o -> o.node() + " owns " + o.owns() + " load " + o.load()).toList();
     }
 
     private void order(InstallRequest request, Deferred<InstalledBehaviour> answer) {
@@ -427,11 +449,12 @@ final class FabricInstaller implements BundleInstaller {
     void received(Wire.Install m) {
         switch (m.op()) {
         case Wire.Install.BID -> desk.offer(m.types() == null ? List.of() : m.types(),
-                offer -> desk.reply(m, Wire.Install.OFFER, r -> {
+                m.devices() == null ? List.of() : m.devices(), offer -> desk.reply(m, Wire.Install.OFFER, r -> {
                     r.candidates = offer.candidates();
                     r.load = offer.load();
+                    r.owns = offer.owns().isEmpty() ? null : offer.owns();
                 }));
-        case Wire.Install.OFFER -> offered(m.id(), new Offer(m.from(), m.candidates(), m.load()));
+        case Wire.Install.OFFER -> offered(m.id(), new Offer(m.from(), m.candidates(), m.load(), m.owns()));
         case Wire.Install.ORDER -> desk.installHere(m);
         case Wire.Install.RESULT -> result(m);
         default -> {

@@ -19,7 +19,8 @@ import eu.brain.iot.federation.impl.InstallChoice.Offer;
 
 /**
  * The answering side of {@link FabricInstaller}: this node's offer to a {@code bid} (its local installer's
- * {@code find}, from memory, and its load: the behaviours that installer installed), and an {@code order} from
+ * {@code find}, from memory, its load: the behaviours that installer installed, and which of the devices the event
+ * names it owns, from its edge's memory), and an {@code order} from
  * another node carried out by the local installer, its {@code result} sent back. A node without an installer offers
  * nothing and refuses orders ({@code CLOSED}), so that the asking node need not wait for its deadline.
  * <p>
@@ -32,14 +33,16 @@ final class InstallDesk {
     private final ScheduledExecutorService in;
     private final FabricInstaller.Sending sending;
     private final Supplier<BundleInstaller> local;
+    private final Supplier<OwnedDevices> owned;
     private final Host host;
 
     InstallDesk(Settings settings, ScheduledExecutorService in, FabricInstaller.Sending sending,
-            Supplier<BundleInstaller> local, Host host) {
+            Supplier<BundleInstaller> local, Supplier<OwnedDevices> owned, Host host) {
         this.settings = settings;
         this.in = in;
         this.sending = sending;
         this.local = local;
+        this.owned = owned;
         this.host = host;
     }
 
@@ -47,8 +50,18 @@ final class InstallDesk {
         return settings.node();
     }
 
-    /** This node's offer, from its installer's memory; passed on the inbound thread. */
-    void offer(List<String> types, Consumer<Offer> then) {
+    /** The devices among {@code devices} this node owns, from its edge's memory; none when it cannot say. */
+    private List<String> owns(List<String> devices) {
+        OwnedDevices mine = owned.get();
+        try {
+            return devices.stream().filter(mine::owns).toList();
+        } catch (RuntimeException e) {
+            return List.of(); // an edge going away: as a node without one
+        }
+    }
+
+    /** This node's offer for an event of {@code types} naming {@code devices}, from memory; on the inbound thread. */
+    void offer(List<String> types, List<String> devices, Consumer<Offer> then) {
         BundleInstaller mine = local.get();
         if (mine == null) {
             then.accept(new Offer(self(), List.of(), 0));
@@ -76,7 +89,7 @@ final class InstallDesk {
             } catch (RuntimeException e) {
                 load = Integer.MAX_VALUE;
             }
-            then.accept(new Offer(self(), candidates, load));
+            then.accept(new Offer(self(), candidates, load, candidates.isEmpty() ? List.of() : owns(devices)));
         };
         if (f.isDone()) {
             give.run();
@@ -140,6 +153,8 @@ final class InstallDesk {
         List<String> types;
         List<BehaviourCandidate> candidates;
         int load;
+        List<String> devices;
+        List<String> owns;
         InstallRequest request;
         boolean ok;
         String problem;
@@ -151,7 +166,7 @@ final class InstallDesk {
         Draft d = new Draft();
         fill.accept(d);
         return new Wire.Install(op, self(), to, System.currentTimeMillis(), id, d.types, d.candidates, d.load,
-                d.request, d.ok, d.problem, d.message, d.installed);
+                d.request, d.ok, d.problem, d.message, d.installed, d.devices, d.owns);
     }
 
 }

@@ -156,11 +156,12 @@ final class Wire {
      * {@code op} is {@link #BID} (which candidates do you offer for {@code types}, and what is your load?),
      * {@link #OFFER} (the answer: {@code candidates}, {@code load}), {@link #ORDER} (install {@code request}) or
      * {@link #RESULT} ({@code ok} and {@code installed}, or {@code problem} and {@code message}). {@code id} pairs an
-     * answer with its question.
+     * answer with its question. A bid names the {@code devices} the event names, and an offer says which of them
+     * the node {@code owns}; both may be missing (a node that does not say owns none).
      */
     record Install(String op, String from, String to, long sent, String id, List<String> types,
             List<BehaviourCandidate> candidates, int load, InstallRequest request, boolean ok, String problem,
-            String message, InstalledBehaviour installed) {
+            String message, InstalledBehaviour installed, List<String> devices, List<String> owns) {
         static final String BID = "bid";
         static final String OFFER = "offer";
         static final String ORDER = "order";

@@ -108,6 +108,46 @@ class RemoteInstallTest extends FabricTestBase {
         assertThat(a.log).anyMatch(l -> l.contains("node b installs " + RECORDER));
     }
 
+    /**
+     * Both nodes offer the behaviour with the same load; the held events name a robot that node b's edge owns: b
+     * installs it, though a asks and has the lower name (which decides when the event names no device).
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void theNodeThatOwnsTheRobotTheEventNamesInstalls(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        Recorder onA = new Recorder();
+        Recorder onB = new Recorder();
+        TestNode[] aRef = new TestNode[1];
+        TestNode[] bRef = new TestNode[1];
+        FakeInstaller atA = offering(aRef, onA);
+        FakeInstaller atB = offering(bRef, onB);
+        aRef[0] = node("a", atA);
+        bRef[0] = node("b", atB);
+        TestNode a = aRef[0];
+        ((FabricInstaller) bRef[0].fabric.installer()).ownedDevices("robot2"::equals);
+        awaitOnline(a, bRef[0]);
+        assertThat(a.fabric.installer().find(List.of(MOVED)).getValue()).as("no device named: the lower name")
+                .extracting(cand -> cand.node).containsOnly("a");
+
+        MiniBms bms = new MiniBms(a.fabric.installer(), MOVED, Map.of("robotId", "robot2", "seq", 1L));
+        a.bus.policy(bms);
+        int held = 100;
+        for (int i = 1; i <= held; i++) {
+            a.bus.deliver(new Moved("robot2", i));
+        }
+        assertThat(bms.found.get(30, TimeUnit.SECONDS)).extracting(cand -> cand.node).containsOnly("b");
+        bms.outcome.get(30, TimeUnit.SECONDS);
+        await().atMost(DEADLINE).until(() -> onB.got.size() >= held);
+        await().during(Duration.ofMillis(300)).atMost(DEADLINE).until(() -> onB.got.size() == held);
+        assertThat(onB.seqs()).containsExactlyElementsOf(LongStream.rangeClosed(1, held).boxed().toList());
+        assertThat(atB.installs).hasSize(1);
+        assertThat(atA.installs).isEmpty();
+        assertThat(onA.got).isEmpty();
+        assertThat(a.log).anyMatch(l -> l.contains("node b installs " + RECORDER + " for events of " + MOVED
+                + " naming [robot2] (owns [robot2], load 0"));
+    }
+
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
     void theChosenNodeGoingOfflineMidInstallFailsTheInstallNamingIt(Broker.Kind kind) throws Exception {

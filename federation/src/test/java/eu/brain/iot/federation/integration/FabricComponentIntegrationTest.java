@@ -16,6 +16,7 @@ import java.util.Dictionary;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.TimeUnit;
@@ -42,6 +43,8 @@ import org.osgi.framework.ServiceReference;
 import org.osgi.framework.ServiceRegistration;
 import org.osgi.service.cm.Configuration;
 import org.osgi.service.cm.ConfigurationAdmin;
+import org.osgi.service.component.runtime.ServiceComponentRuntime;
+import org.osgi.service.component.runtime.dto.ComponentConfigurationDTO;
 import org.osgi.service.log.LogEntry;
 import org.osgi.service.log.LogReaderService;
 import org.osgi.test.common.annotation.InjectBundleContext;
@@ -57,6 +60,7 @@ import eu.brain.iot.bis.api.BehaviourCandidate;
 import eu.brain.iot.bis.api.BundleInstaller;
 import eu.brain.iot.bis.api.InstallRequest;
 import eu.brain.iot.bis.api.InstalledBehaviour;
+import eu.brain.iot.edge.model.api.DeviceOwnership;
 import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
@@ -84,12 +88,16 @@ class FabricComponentIntegrationTest {
     @InjectService(timeout = 5000)
     ConfigurationAdmin cm;
 
+    @InjectService(timeout = 5000)
+    ServiceComponentRuntime scr;
+
     final ObjectMapper json = new ObjectMapper();
     Process mosquitto;
     MqttAsyncClient peer;
     Configuration config;
     ServiceRegistration<?> behaviourReg;
     ServiceRegistration<?> installerReg;
+    ServiceRegistration<?> ownershipReg;
     final Map<String, byte[]> retained = new ConcurrentHashMap<>();
     final List<String> received = new CopyOnWriteArrayList<>();
     final Map<String, String> signatures = new ConcurrentHashMap<>();
@@ -104,6 +112,9 @@ class FabricComponentIntegrationTest {
         }
         if (installerReg != null) {
             installerReg.unregister();
+        }
+        if (ownershipReg != null) {
+            ownershipReg.unregister();
         }
         if (peer != null) {
             peer.disconnectForcibly(0, 1, false);
@@ -238,14 +249,17 @@ class FabricComponentIntegrationTest {
                 .contains("it.Late"));
 
         // the node's own installer: the fabric's is registered above it (the BMS takes the best-ranked one), and
-        // answers the peer's signed bid from it
+        // answers the peer's signed bid from it, saying which of the devices the bid names this node's edge owns
         installerReg = context.registerService(BundleInstaller.class, new OwnInstaller(), null);
+        ownershipReg = context.registerService(DeviceOwnership.class, new EdgeOwning("robot2"), null);
+        await().atMost(DEADLINE).until(() -> active("eu.brain.iot.federation.impl.EdgeOwnedDevices"));
         await().atMost(DEADLINE).until(() -> fabricInstaller() != null);
         assertThat(fabricInstaller().getProperty(Constants.SERVICE_RANKING)).isEqualTo(100);
         assertThat(context.getServiceReference(BundleInstaller.class)).as("the best-ranked installer")
                 .isEqualTo(fabricInstaller());
         publish(key, BASE + "it-node/install/peer", "{\"op\":\"bid\",\"from\":\"peer\",\"to\":\"it-node\","
-                + "\"sent\":" + System.currentTimeMillis() + ",\"id\":\"q1\",\"types\":[\"it.Nobody\"]}", false);
+                + "\"sent\":" + System.currentTimeMillis() + ",\"id\":\"q1\",\"types\":[\"it.Nobody\"],"
+                + "\"devices\":[\"robot1\",\"robot2\"]}", false);
         String offers = BASE + "peer/install/it-node";
         await().atMost(DEADLINE).until(() -> received.stream().anyMatch(m -> m.startsWith(offers)));
         String offerText = received.stream().filter(m -> m.startsWith(offers)).findFirst().orElseThrow()
@@ -254,6 +268,7 @@ class FabricComponentIntegrationTest {
         assertThat(offer.path("op").asText()).isEqualTo("offer");
         assertThat(offer.path("id").asText()).isEqualTo("q1");
         assertThat(offer.path("candidates").get(0).path("symbolicName").asText()).isEqualTo("it.behaviour");
+        assertThat(offer.path("owns").toString()).isEqualTo("[\"robot2\"]");
         assertThat(signatures.get(offers)).isEqualTo(sign(key, offers, offerText.getBytes(StandardCharsets.UTF_8)));
         installerReg.unregister();
         installerReg = null;
@@ -302,6 +317,50 @@ class FabricComponentIntegrationTest {
         ServiceReference<?>[] refs = context.getServiceReferences(BundleInstaller.class.getName(),
                 "(eu.brain.iot.fabric.installer=it-node)");
         return refs == null ? null : refs[0];
+    }
+
+    private boolean active(String component) {
+        return scr.getComponentDescriptionDTOs().stream().filter(d -> d.name.equals(component))
+                .flatMap(d -> scr.getComponentConfigurationDTOs(d).stream())
+                .anyMatch(c -> c.state == ComponentConfigurationDTO.ACTIVE);
+    }
+
+    /** The node's edge, as far as the fabric asks it: it owns one device. */
+    record EdgeOwning(String device) implements DeviceOwnership {
+        @Override
+        public String nodeName() {
+            return "it-node";
+        }
+
+        @Override
+        public Set<String> owned() {
+            return Set.of(device);
+        }
+
+        @Override
+        public Set<String> share() {
+            return owned();
+        }
+
+        @Override
+        public Set<String> fleet() {
+            return owned();
+        }
+
+        @Override
+        public boolean owns(String deviceId) {
+            return device.equals(deviceId);
+        }
+
+        @Override
+        public Set<String> take(Set<String> deviceIds) {
+            return Set.of();
+        }
+
+        @Override
+        public Set<String> release(Set<String> deviceIds) {
+            return Set.of();
+        }
     }
 
     /** The node's own installer, as far as the fabric asks it: one behaviour for {@code it.Nobody}. */

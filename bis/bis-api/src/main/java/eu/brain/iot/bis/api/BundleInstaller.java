@@ -1,6 +1,7 @@
 package eu.brain.iot.bis.api;
 
 import java.util.List;
+import java.util.Map;
 
 import org.osgi.annotation.versioning.ProviderType;
 import org.osgi.util.promise.Promise;
@@ -31,6 +32,18 @@ public interface BundleInstaller {
      * @param consumedTypes event type names, e.g. an event's type followed by its supertypes and interfaces
      */
     Promise<List<BehaviourCandidate>> find(List<String> consumedTypes);
+
+    /**
+     * As {@link #find(List)}, for one event that no behaviour takes: an installer that spans several nodes may use
+     * its fields to choose the node (e.g. the node that owns the devices the event names); an installer of one
+     * node answers as {@link #find(List)}, which this default does. Since 1.3.
+     *
+     * @param consumedTypes event type names, e.g. an event's type followed by its supertypes and interfaces
+     * @param event the event's fields as an untyped behaviour gets them (a map; nested data as maps); not changed
+     */
+    default Promise<List<BehaviourCandidate>> find(List<String> consumedTypes, Map<String, ?> event) {
+        return find(consumedTypes);
+    }
 
     /** Install (or restart) a behaviour; resolves when its smart behaviours are registered with the bus. */
     Promise<InstalledBehaviour> install(InstallRequest request);

@@ -3,6 +3,7 @@ package eu.brain.iot.bms.impl;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
+import java.util.Map;
 
 import org.osgi.util.promise.Promise;
 import org.osgi.util.promise.Promises;
@@ -64,6 +65,12 @@ final class CurrentInstaller implements BundleInstaller {
     public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes) {
         BundleInstaller i = current();
         return i == null ? none() : i.find(consumedTypes);
+    }
+
+    @Override
+    public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes, Map<String, ?> event) {
+        BundleInstaller i = current();
+        return i == null ? none() : i.find(consumedTypes, event);
     }
 
     @Override
