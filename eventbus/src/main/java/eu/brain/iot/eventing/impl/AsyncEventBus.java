@@ -209,7 +209,7 @@ final class AsyncEventBus implements EventBus {
                 return lastResortOrUnhandled(table, route, snapshot, wait, done);
             }
             if (decided == null) {
-                decided = asker.ask(current, route);
+                decided = asker.ask(current, route, snapshot);
             }
             if (decided == Disposition.UNHANDLED) {
                 countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()

@@ -41,18 +41,22 @@ final class PolicyAsker {
         Map<String, Disposition> decided = new HashMap<>();
         for (Held h : events) {
             decided.computeIfAbsent(h.counters().eventType,
-                    t -> current == null ? Disposition.LAST_RESORT : ask(current, route.apply(h)));
+                    t -> current == null ? Disposition.LAST_RESORT : ask(current, route.apply(h), h.snapshot()));
         }
         return decided;
     }
 
-    Disposition ask(UnhandledEventPolicy current, Route route) {
+    /** @param snapshot the bus's snapshot of the event: an event object, or a map for an untyped event */
+    @SuppressWarnings("unchecked")
+    Disposition ask(UnhandledEventPolicy current, Route route, Object snapshot) {
         if (ASKING.get()) {
             return Disposition.LAST_RESORT;
         }
         ASKING.set(Boolean.TRUE);
         try {
-            Disposition d = current.unhandled(route.counters().eventType, route.typeNames());
+            Disposition d = current.unhandled(route.counters().eventType, route.typeNames(),
+                    () -> snapshot instanceof Map<?, ?> map ? EventMaps.copyMap((Map<String, ?>) map)
+                            : EventMaps.toMap(snapshot));
             return d == null ? Disposition.LAST_RESORT : d;
         } catch (RuntimeException e) {
             if (failureLogged.compareAndSet(false, true)) {

@@ -1,6 +1,8 @@
 package eu.brain.iot.eventing.spi;
 
 import java.util.List;
+import java.util.Map;
+import java.util.function.Supplier;
 
 import org.osgi.annotation.versioning.ConsumerType;
 
@@ -31,6 +33,19 @@ public interface UnhandledEventPolicy {
      * @return what to do with this event
      */
     Disposition unhandled(String eventType, List<String> typeHierarchy);
+
+    /**
+     * As {@link #unhandled(String, List)}, with the event's fields at hand: a policy that chooses where to install
+     * by what the event names (a robot, a door) reads them; the bus calls this one, and this default ignores the
+     * fields. Since 1.3.
+     *
+     * @param fields builds a copy of the event's fields (nested data as maps and lists) when called: call it only
+     *        when needed, on the calling thread, before returning
+     */
+    default Disposition unhandled(String eventType, List<String> typeHierarchy,
+            Supplier<Map<String, Object>> fields) {
+        return unhandled(eventType, typeHierarchy);
+    }
 
     /**
      * @return how many events the bus may hold for this policy, all types together (at least 1; read each time an

@@ -4,6 +4,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.function.Supplier;
 
 import eu.brain.iot.bis.api.BehaviourCandidate;
 import eu.brain.iot.bis.api.BundleInstaller;
@@ -14,37 +15,35 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy;
 /**
  * The part of the BMS that the fabric's installer serves, as the multi-node tests need it: every unhandled event of
  * a watched type is held; the first asks the installer's {@code find} for the type hierarchy and installs the first
- * candidate on the node it names, as the BMS does ({@code InstallRequest.node}). It may pass the installer the
- * fields of the event it asks for ({@code find(types, event)}): the bus gives a policy no event's fields, so the
- * test says what they are. Thread-safe (concurrent map, futures).
+ * candidate on the node it names, as the BMS does ({@code InstallRequest.node}), passing the installer the fields of
+ * that first event as the bus gives them ({@code find(types, event)}). Thread-safe (concurrent map, futures).
  */
 final class MiniBms implements UnhandledEventPolicy {
 
     private final BundleInstaller installer;
     private final String watched;
-    private final Map<String, ?> event;
     final CompletableFuture<List<BehaviourCandidate>> found = new CompletableFuture<>();
     final CompletableFuture<InstalledBehaviour> outcome = new CompletableFuture<>();
     private final ConcurrentHashMap<String, Boolean> asked = new ConcurrentHashMap<>();
 
     MiniBms(BundleInstaller installer, String watched) {
-        this(installer, watched, null);
-    }
-
-    /** @param event the fields of the event it asks for, passed to the installer; {@code null}: types only */
-    MiniBms(BundleInstaller installer, String watched, Map<String, ?> event) {
         this.installer = installer;
         this.watched = watched;
-        this.event = event;
     }
 
     @Override
     public Disposition unhandled(String eventType, List<String> typeHierarchy) {
+        return unhandled(eventType, typeHierarchy, Map::of);
+    }
+
+    @Override
+    public Disposition unhandled(String eventType, List<String> typeHierarchy,
+            Supplier<Map<String, Object>> fields) {
         if (!eventType.equals(watched)) {
             return Disposition.LAST_RESORT;
         }
         if (asked.putIfAbsent(eventType, Boolean.TRUE) == null) {
-            installer.find(typeHierarchy, event).onFailure(found::completeExceptionally).onSuccess(candidates -> {
+            installer.find(typeHierarchy, fields.get()).onFailure(found::completeExceptionally).onSuccess(candidates -> {
                 found.complete(candidates);
                 if (candidates.isEmpty()) {
                     outcome.completeExceptionally(new IllegalStateException("no candidate"));

@@ -9,6 +9,7 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.LongAdder;
 import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
 
 import org.osgi.service.log.Logger;
 import org.osgi.util.promise.Promise;
@@ -44,8 +45,7 @@ import eu.brain.iot.eventing.spi.UnhandledEventPolicy.Disposition;
  * <p>
  * Ownership: {@link #states} is shared; each entry is replaced as a whole with {@code replace(type, old, new)}
  * (see {@link TypeState}). {@link #jobs}, {@link #revivals} and {@link #loggedNotFound} belong to the BMS's thread.
- * {@link #settings} is volatile, replaced by {@link #reconfigure}. {@link #hierarchies} holds the searched types of
- * each type with a state (added by publishers, dropped by the sweep with the state).
+ * {@link #settings} is volatile, replaced by {@link #reconfigure}. {@link #searchedTypes} is thread-safe.
  */
 final class BehaviourManager {
 
@@ -59,7 +59,7 @@ final class BehaviourManager {
     private volatile Settings settings;
 
     private final ConcurrentHashMap<String, TypeState> states = new ConcurrentHashMap<>();
-    private final ConcurrentHashMap<String, List<String>> hierarchies = new ConcurrentHashMap<>();
+    private final SearchedTypes searchedTypes = new SearchedTypes();
     /** In-flight install requests by behaviour: types needing the same one, and its revival, share it. */
     private final InstallJobs jobs;
     private final Revivals revivals;
@@ -97,8 +97,8 @@ final class BehaviourManager {
 
     // ---------------------------------------------------------------- publishers' threads
 
-    /** The policy's answer; see {@code UnhandledEventPolicy.unhandled}. Never blocks. */
-    Disposition unhandled(String eventType, List<String> typeHierarchy) {
+    /** The policy's answer (see {@code UnhandledEventPolicy.unhandled}); never blocks; see {@link #search}. */
+    Disposition unhandled(String eventType, List<String> typeHierarchy, Supplier<Map<String, Object>> fields) {
         for (String type : typeHierarchy) {
             if (Alerts.TYPES.contains(type)) {
                 return Disposition.LAST_RESORT; // our own alerts: never searched for
@@ -114,7 +114,7 @@ final class BehaviourManager {
             Disposition disposition = state == null ? null : state.disposition(now);
             if (disposition == null) {
                 List<String> searched = typeHierarchy.isEmpty() ? List.of(eventType) : List.copyOf(typeHierarchy);
-                hierarchies.putIfAbsent(eventType, searched);
+                searchedTypes.started(eventType, searched, fields);
                 Searching searching = new Searching(searched, now, 1);
                 boolean won = state == null ? states.putIfAbsent(eventType, searching) == null
                         : states.replace(eventType, state, searching);
@@ -131,7 +131,8 @@ final class BehaviourManager {
     }
 
     /**
-     * Ask the installer for candidates. A resolved answer is used at once (a miss answers LAST_RESORT to this very
+     * Ask the installer for candidates, with the fields of the episode's first event (an installer spanning nodes
+     * prefers the node that owns the device it names). A resolved answer is used at once (a miss answers LAST_RESORT to this very
      * event: consumers of last resort, else counted as unhandled); otherwise the events are held until the answer
      * arrives on the BMS's thread. Runs on a publisher's thread or on the BMS's.
      */
@@ -139,7 +140,7 @@ final class BehaviourManager {
         counters.searches.increment();
         Promise<List<BehaviourCandidate>> found;
         try {
-            found = installer.find(searching.searched());
+            found = installer.find(searching.searched(), searchedTypes.firstEvent(eventType));
         } catch (RuntimeException e) {
             found = Promises.failed(e);
         }
@@ -388,7 +389,7 @@ final class BehaviourManager {
             TypeState state = states.get(h.eventType);
             if (state == null || (state instanceof Resting r && now >= r.until())) {
                 // the deadline counts from now: the events were held before this BMS took them over
-                Searching searching = new Searching(hierarchies.getOrDefault(h.eventType, List.of(h.eventType)),
+                Searching searching = new Searching(searchedTypes.hierarchy(h.eventType),
                         now, 1);
                 if (state == null ? states.putIfAbsent(h.eventType, searching) == null
                         : states.replace(h.eventType, state, searching)) {
@@ -460,7 +461,7 @@ final class BehaviourManager {
     /** Drop a state that no longer matters, and the type's hierarchy with it: the maps stay as small as the work. */
     private void forget(String eventType, TypeState state) {
         if (states.remove(eventType, state)) {
-            hierarchies.remove(eventType);
+            searchedTypes.forget(eventType);
         }
     }
 
@@ -476,12 +477,8 @@ final class BehaviourManager {
     }
 
     private int heldCount(String eventType) {
-        for (HeldType h : held.held()) {
-            if (h.eventType.equals(eventType)) {
-                return h.count;
-            }
-        }
-        return 0;
+        return held.held().stream().filter(h -> h.eventType.equals(eventType)).mapToInt(h -> h.count).findFirst()
+                .orElse(0);
     }
 
     // ---------------------------------------------------------------- monitoring (any thread)

@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.concurrent.ExecutorService;
 import java.util.concurrent.Executors;
 import java.util.function.BooleanSupplier;
+import java.util.function.Supplier;
 
 import org.osgi.framework.BundleContext;
 import org.osgi.framework.Constants;
@@ -124,7 +125,13 @@ public final class BehaviourManagerComponent implements UnhandledEventPolicy, Be
 
     @Override
     public Disposition unhandled(String eventType, List<String> typeHierarchy) {
-        return manager.unhandled(eventType, typeHierarchy);
+        return manager.unhandled(eventType, typeHierarchy, Map::of);
+    }
+
+    @Override
+    public Disposition unhandled(String eventType, List<String> typeHierarchy,
+            Supplier<Map<String, Object>> fields) {
+        return manager.unhandled(eventType, typeHierarchy, fields);
     }
 
     @Override

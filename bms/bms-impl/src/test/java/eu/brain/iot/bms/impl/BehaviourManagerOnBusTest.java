@@ -87,7 +87,13 @@ class BehaviourManagerOnBusTest {
         bus.policy(new eu.brain.iot.eventing.spi.UnhandledEventPolicy() {
             @Override
             public Disposition unhandled(String eventType, List<String> typeHierarchy) {
-                return bms.unhandled(eventType, typeHierarchy);
+                return bms.unhandled(eventType, typeHierarchy, Map::of);
+            }
+
+            @Override
+            public Disposition unhandled(String eventType, List<String> typeHierarchy,
+                    java.util.function.Supplier<Map<String, Object>> fields) {
+                return bms.unhandled(eventType, typeHierarchy, fields);
             }
 
             @Override
@@ -160,6 +166,22 @@ class BehaviourManagerOnBusTest {
         assertThat(counters.snapshot().heldEvents).isPositive(); // some events did wait in the hold
         assertThat(bus.statistics(Order.class.getName()).unhandled).isZero();
         assertThat(bus.held()).isEmpty();
+    }
+
+    @Test
+    void theSearchIsGivenTheFieldsOfTheEpisodesFirstEvent() {
+        startBms(Settings.DEFAULTS);
+        for (int seq = 7; seq <= 9; seq++) {
+            Order o = new Order();
+            o.publisher = "robot" + seq; // a device the event names: a fabric's installer may choose its owner
+            o.seq = seq;
+            bus.deliver(o);
+        }
+        await().atMost(DEADLINE).until(() -> !installer.findEvents.isEmpty());
+        assertThat(installer.findEvents).singleElement().satisfies(event -> {
+            assertThat(event.get("publisher")).isEqualTo("robot7");
+            assertThat(event.get("seq")).isEqualTo(7);
+        });
     }
 
     @Test

@@ -5,6 +5,7 @@ import static org.assertj.core.api.Assertions.assertThatThrownBy;
 
 import java.util.ArrayList;
 import java.util.List;
+import java.util.Map;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.atomic.LongAdder;
 
@@ -116,10 +117,10 @@ class BehaviourManagerTest {
     @Test
     void theBmsNeverSearchesForItsOwnAlerts() {
         assertThat(bms.unhandled(BehaviourNotFound.class.getName(), List.of(BehaviourNotFound.class.getName(),
-                "eu.brain.iot.eventing.api.BrainIoTEvent"))).isEqualTo(Disposition.LAST_RESORT);
-        assertThat(bms.unhandled("x.MyAlert", List.of("x.MyAlert", BehaviourInstallFailed.class.getName())))
+                "eu.brain.iot.eventing.api.BrainIoTEvent"), Map::of)).isEqualTo(Disposition.LAST_RESORT);
+        assertThat(bms.unhandled("x.MyAlert", List.of("x.MyAlert", BehaviourInstallFailed.class.getName()), Map::of))
                 .isEqualTo(Disposition.LAST_RESORT);
-        assertThat(bms.unhandled("eu.brain.iot.ignored.Tick", List.of("eu.brain.iot.ignored.Tick")))
+        assertThat(bms.unhandled("eu.brain.iot.ignored.Tick", List.of("eu.brain.iot.ignored.Tick"), Map::of))
                 .isEqualTo(Disposition.LAST_RESORT);
         assertThat(installer.finds).hasValue(0);
     }
@@ -388,7 +389,7 @@ class BehaviourManagerTest {
                     return;
                 }
                 for (int i = 0; i < 10_000; i++) {
-                    answers.add(bms.unhandled(DOOR_EVENT, List.of(DOOR_EVENT)));
+                    answers.add(bms.unhandled(DOOR_EVENT, List.of(DOOR_EVENT), Map::of));
                 }
             });
             p.start();

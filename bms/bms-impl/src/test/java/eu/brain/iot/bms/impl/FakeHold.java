@@ -27,7 +27,7 @@ final class FakeHold implements HeldEvents {
         List<String> hierarchy = new ArrayList<>();
         hierarchy.add(type);
         hierarchy.addAll(List.of(supertypes));
-        Disposition d = bms.unhandled(type, hierarchy);
+        Disposition d = bms.unhandled(type, hierarchy, Map::of);
         switch (d) {
         case HOLD -> held.computeIfAbsent(type, t -> {
             HeldType h = new HeldType();

@@ -45,6 +45,8 @@ final class FakeInstaller implements BundleInstaller {
     final List<Request> requests = new CopyOnWriteArrayList<>();
     final List<InstalledBehaviour> active = new CopyOnWriteArrayList<>();
     final AtomicInteger finds = new AtomicInteger();
+    /** The event fields each {@code find(types, event)} was given, in call order. */
+    final List<Map<String, ?>> findEvents = new CopyOnWriteArrayList<>();
     /** When set, find answers later: the test resolves it. */
     volatile Deferred<List<BehaviourCandidate>> pendingFind;
     boolean remote;
@@ -60,6 +62,12 @@ final class FakeInstaller implements BundleInstaller {
         c.consumed = List.of(type);
         c.repository = "file:/test/index.xml";
         candidates.computeIfAbsent(type, t -> new ArrayList<>()).add(c);
+    }
+
+    @Override
+    public Promise<List<BehaviourCandidate>> find(List<String> consumedTypes, Map<String, ?> event) {
+        findEvents.add(event);
+        return find(consumedTypes);
     }
 
     @Override
