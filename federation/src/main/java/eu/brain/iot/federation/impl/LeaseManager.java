@@ -57,6 +57,8 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
     // the scheduler thread only
     private LeaseTable table;
     private long outSinceNanos = -1;
+    /** Whether the node was in its fabric at an earlier renewal (only the lease thread reads and writes it). */
+    private boolean joinedBefore;
     private List<String> lapsedBefore = List.of();
 
     /**
@@ -150,9 +152,10 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         if (outSinceNanos >= 0) {
             outSinceNanos = -1;
             if (ownership.owned().isEmpty()) {
-                startListening("back in its fabric");
+                startListening(joinedBefore ? "back in its fabric" : "joined its fabric");
             }
         }
+        joinedBefore = true;
         List<String> lapsed = table.lapsed(now);
         if (!lapsed.equals(lapsedBefore) && !lapsed.isEmpty()) {
             LOG.log(System.Logger.Level.WARNING, "Device leases: the lease of {0} lapsed; its devices go to the "
