@@ -11,11 +11,14 @@ import java.util.concurrent.TimeUnit;
 
 import org.awaitility.Awaitility;
 
-import com.hivemq.embedded.EmbeddedHiveMQ;
+import eu.brain.iot.broker.BrokerOptions;
+import eu.brain.iot.broker.BrokerOptions.Persistence;
+import eu.brain.iot.broker.EmbeddedBroker;
+
 
 /**
  * A real MQTT 5 broker for a test, on a free port of 127.0.0.1: Mosquitto (Debian's binary, as a process of its own)
- * or HiveMQ Community Edition embedded in the test's JVM. Both keep no state across a restart (Mosquitto's default;
+ * or the fabric's embedded broker (HiveMQ Community Edition, broker/) in the test's JVM. Both keep no state across a restart (Mosquitto's default;
  * HiveMQ in memory), so a restart loses every queued message and session: what the fabric's end-to-end
  * acknowledgement must make up for.
  */
@@ -99,8 +102,11 @@ abstract class Broker implements AutoCloseable {
         }
     }
 
+    /** The fabric's own embedded broker (broker/), with no persistence and HiveMQ's default offline queue. */
     static final class HiveMq extends Broker {
-        private EmbeddedHiveMQ hivemq;
+        /** HiveMQ's own default per offline client: a broker that drops what an offline node was sent. */
+        static final long HIVEMQ_DEFAULT_QUEUE = 1_000;
+        private EmbeddedBroker broker;
 
         HiveMq(Path dir) throws IOException {
             super(dir);
@@ -108,32 +114,16 @@ abstract class Broker implements AutoCloseable {
 
         @Override
         void start() throws Exception {
-            Path conf = dir.resolve("conf");
-            Files.createDirectories(conf);
-            Files.createDirectories(dir.resolve("data"));
-            Files.createDirectories(dir.resolve("extensions"));
-            Files.writeString(conf.resolve("config.xml"), """
-                    <?xml version="1.0"?>
-                    <hivemq>
-                      <listeners>
-                        <tcp-listener><port>%d</port><bind-address>127.0.0.1</bind-address></tcp-listener>
-                      </listeners>
-                      <persistence><mode>in-memory</mode></persistence>
-                      <anonymous-usage-statistics><enabled>false</enabled></anonymous-usage-statistics>
-                    </hivemq>
-                    """.formatted(port));
-            hivemq = EmbeddedHiveMQ.builder().withConfigurationFolder(conf).withDataFolder(dir.resolve("data"))
-                    .withExtensionsFolder(dir.resolve("extensions")).build();
-            hivemq.start().get(60, TimeUnit.SECONDS);
+            broker = EmbeddedBroker.start(new BrokerOptions(BrokerOptions.DEFAULT_BIND, port, dir,
+                    Persistence.IN_MEMORY, HIVEMQ_DEFAULT_QUEUE));
             awaitListening();
         }
 
         @Override
-        void stop() throws Exception {
-            if (hivemq != null) {
-                hivemq.stop().get(60, TimeUnit.SECONDS);
-                hivemq.close();
-                hivemq = null;
+        void stop() {
+            if (broker != null) {
+                broker.close();
+                broker = null;
             }
         }
     }
