@@ -2,6 +2,7 @@ package eu.brain.iot.eventing.impl;
 
 import java.util.List;
 import java.util.Map;
+import java.util.Optional;
 import java.util.Set;
 
 import org.osgi.framework.BundleContext;
@@ -9,6 +10,7 @@ import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
 
+import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.EventBusOverflowException;
 import eu.brain.iot.eventing.impl.TextTable.Column;
@@ -50,8 +52,9 @@ public final class BusCommands {
     }
 
     /**
-     * Publish an untyped event by hand; typed behaviours that consume the type receive it converted to their
-     * class. Errors come back as a message, not an exception: this is typed by a person. A type no bundle and no
+     * Publish an event by hand: as an object of its class when a bundle of this node exports it (so that the
+     * consumers of its supertypes take it too, as from any publisher), else untyped (typed behaviours that consume
+     * the type receive it converted to their class). Errors come back as a message, not an exception: this is typed by a person. A type no bundle and no
      * behaviour knows is refused when known names are near it (a typo, another case), with those names.
      */
     public String publish(String eventType, String... fields) {
@@ -79,10 +82,18 @@ public final class BusCommands {
                         + "it in its repositories (bms:pending, bms:history).";
             }
         }
+        Optional<Class<? extends BrainIoTEvent>> type = KnownEventTypes.eventClass(context, eventType);
         try {
-            bus.deliver(eventType, data);
+            if (type.isPresent()) {
+                bus.deliver(EventMaps.fromMap(data, type.get())); // typed: its supertypes' consumers take it too
+            } else {
+                bus.deliver(eventType, data);
+            }
         } catch (EventBusOverflowException e) {
             return "bus:publish: " + e.getMessage();
+        } catch (RuntimeException e) {
+            return "bus:publish: the fields " + data + " do not make a " + eventType + " (" + e.getMessage()
+                    + "); " + PUBLISH_USAGE;
         }
         return "Published " + eventType + " " + data + " (bus:stats counts it, bus:behaviours shows who consumes it)."
                 + note;

@@ -1,5 +1,6 @@
 package eu.brain.iot.eventing.impl;
 
+import java.util.Optional;
 import java.util.Set;
 import java.util.TreeSet;
 
@@ -10,6 +11,7 @@ import org.osgi.framework.namespace.PackageNamespace;
 import org.osgi.framework.wiring.BundleCapability;
 import org.osgi.framework.wiring.BundleWiring;
 
+import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 
 /**
@@ -50,6 +52,34 @@ final class KnownEventTypes {
             }
         }
         return names;
+    }
+
+    /**
+     * The event class of that name, loaded from a bundle that exports its package, if one does and it is a
+     * {@link BrainIoTEvent}: published as that class, the event reaches the consumers of its supertypes too.
+     */
+    static Optional<Class<? extends BrainIoTEvent>> eventClass(BundleContext context, String eventType) {
+        int dot = eventType.lastIndexOf('.');
+        if (dot < 0) {
+            return Optional.empty();
+        }
+        String pkg = eventType.substring(0, dot);
+        for (Bundle bundle : context.getBundles()) {
+            BundleWiring wiring = bundle.getBundleId() == Constants.SYSTEM_BUNDLE_ID ? null
+                    : bundle.adapt(BundleWiring.class);
+            if (wiring != null && wiring.getCapabilities(PackageNamespace.PACKAGE_NAMESPACE).stream()
+                    .anyMatch(c -> pkg.equals(c.getAttributes().get(PackageNamespace.PACKAGE_NAMESPACE)))) {
+                try {
+                    Class<?> type = bundle.loadClass(eventType);
+                    if (BrainIoTEvent.class.isAssignableFrom(type)) {
+                        return Optional.of(type.asSubclass(BrainIoTEvent.class));
+                    }
+                } catch (ClassNotFoundException | RuntimeException | LinkageError e) {
+                    // not in this exporter (a split package) or not loadable: try the others
+                }
+            }
+        }
+        return Optional.empty();
     }
 
     private static void addClasses(BundleWiring wiring, String pkg, Set<String> names) {

@@ -7,12 +7,18 @@ import java.time.Duration;
 
 import org.junit.jupiter.api.Test;
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.ServiceRegistration;
 import org.osgi.test.common.annotation.InjectBundleContext;
 import org.osgi.test.common.annotation.InjectService;
 
+import eu.brain.iot.eventing.integration.exported.Command;
+import eu.brain.iot.eventing.integration.exported.StopCommand;
 import eu.brain.iot.eventing.monitoring.api.EventBusStatistics;
 
-/** {@code bus:publish} of a type no bundle knows says so and suggests the known names nearest to it. */
+/**
+ * {@code bus:publish} of a type no bundle knows says so and suggests the known names nearest to it; one of a class a
+ * bundle exports is published as that class, so that the consumers of its supertypes take it.
+ */
 class PublishCommandIntegrationTest {
 
     static final Duration DEADLINE = Duration.ofSeconds(10);
@@ -22,6 +28,23 @@ class PublishCommandIntegrationTest {
 
     @InjectService
     EventBusStatistics stats;
+
+    @Test
+    void anEventOfAnExportedClassReachesTheConsumersOfItsSupertype() throws Exception {
+        Recorder recorder = new Recorder();
+        ServiceRegistration<?> reg = new BusTestSupport(context).typed(recorder, null, Command.class);
+        try {
+            await().atMost(DEADLINE).until(() -> stats.consumers().stream()
+                    .anyMatch(c -> c.consumed.contains(Command.class.getName())));
+            assertThat(new BusShell(context).publish(StopCommand.class.getName(), "deviceId=robot7"))
+                    .startsWith("Published ");
+            await().atMost(DEADLINE).until(() -> recorder.events.size() == 1);
+            assertThat(recorder.events.get(0)).isInstanceOfSatisfying(StopCommand.class,
+                    stop -> assertThat(stop.deviceId).isEqualTo("robot7"));
+        } finally {
+            reg.unregister();
+        }
+    }
 
     @Test
     void aTypoOrAWrongCaseIsRefusedWithTheNearestKnownNames() throws Exception {

@@ -31,8 +31,12 @@ class DashboardNodesTest {
     private static final String FABRIC = "dashboard-test";
     private static final String A = "node-a";
     private static final String B = "node-b";
-    /** Taken by every node's dashboard (its consumer is a behaviour to the fabric): published on a, it goes to b. */
-    private static final String TAKEN_BY_B = "eu.brain.iot.behaviours.events.TransitionFired";
+    /**
+     * Taken by every node's edge (it consumes {@code EdgeCommand}): published on a, it goes to b too. For a device no
+     * fleet has, so that both edges only answer it with a refused {@code CommandOutcome}; the dashboard's own
+     * consumer stays local and pulls nothing across.
+     */
+    private static final String TAKEN_BY_B = "eu.brain.iot.edge.api.CancelMissionCommand deviceId=no-such-robot";
     /** Small, so that the Last Will of a killed node comes within 1.5 of it. */
     private static final int KEEP_ALIVE_S = 2;
     private static final int KEY_BYTES = 32;
