@@ -46,8 +46,8 @@ final class Errands {
     }
 
     private final Map<String, Errand> errands = new HashMap<>();
-    /** Robots that may go for carts at once (the wave's size). */
-    private final int wave;
+    /** When a robot without an errand may claim a cart. */
+    private final CartRelease release;
     private final Map<String, Cell> docks = new HashMap<>();
     /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
     private final Map<String, Cell> remembered = new HashMap<>();
@@ -57,9 +57,14 @@ final class Errands {
     private final Set<Cell> drops = new HashSet<>();
     private int delivered;
 
-    /** @param wave robots that may go for carts at once (at least 1) */
+    /** @param wave robots that may go for carts at once, in waves (at least 1) */
     Errands(int wave) {
-        this.wave = Math.max(1, wave);
+        this(CartRelease.waves(wave));
+    }
+
+    /** @param release when a robot without an errand may claim a cart */
+    Errands(CartRelease release) {
+        this.release = release;
     }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
@@ -249,17 +254,17 @@ final class Errands {
     }
 
     /**
-     * The door policy: carts are fetched in waves, so the robots cross the door in one direction at a time. A robot
-     * may claim a cart while no robot carries one (the wave has not started back: no robot comes up through the door
-     * against the robots going down) and fewer than {@code wave} robots go for carts. Once a robot lifts its cart,
-     * no new claim until every cart of the wave is placed in storage; then the next wave goes down.
+     * The door policy ({@link CartRelease}): in waves, a robot may claim a cart while no robot carries one (the wave
+     * has not started back: no robot comes up through the door against the robots going down) and fewer than a
+     * wave's robots go for carts; once a robot lifts its cart, no new claim until every cart of the wave is placed in
+     * storage, then the next wave goes down. Released continuously (the traffic planner), a robot may always claim.
      *
      * @return whether a robot without an errand may claim a cart now
      */
     synchronized boolean waveOpen() {
         long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
         boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
-        return !carrying && toCart < wave;
+        return release.open(toCart, carrying);
     }
 
     /** @return the errands of the robots going for a cart (copies) */

@@ -91,7 +91,8 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
-        this.errands = new Errands(config.traffic() ? Integer.MAX_VALUE : config.wave_robots());
+        this.errands = new Errands(
+                config.traffic() ? CartRelease.continuous() : CartRelease.waves(config.wave_robots()));
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
