@@ -21,7 +21,7 @@ final class BehaviourSettings {
     /** PID to properties. */
     static Map<String, Map<String, Object>> forRun(Options o) {
         Map<String, Map<String, Object>> byPid = new LinkedHashMap<>();
-        byPid.put(ROBOT_PID, o.traffic() ? Map.of("speed", o.speed(), "traffic", true) : Map.of("speed", o.speed()));
+        byPid.put(ROBOT_PID, Map.of("speed", o.speed(), "traffic", o.traffic())); // the bundle's own default: false
         byPid.put(DOOR_PID, Map.of("speed", o.speed()));
         return byPid;
     }

@@ -82,9 +82,13 @@ final class OptionsParser {
             description = "the node gets no behaviour repository: nothing drives the robots")
     private boolean noBehaviours;
     @Option(names = "--traffic", arity = "0", order = 15, description = {
-        "the fleet's traffic planner drives the robots along reserved paths",
+        "the fleet's traffic planner drives the robots along reserved paths: the default",
         "(the robot behaviour's traffic=true; behaviours/README.md, \"Traffic\")"})
     private boolean traffic;
+    @Option(names = "--no-traffic", arity = "0", order = 15, description = {
+        "robot-sim plans each go-to and the orchestrator resolves meetings, robots released in waves",
+        "(the robot behaviour's traffic=false)"})
+    private boolean noTraffic;
     @Option(names = "--broker", paramLabel = "URI", order = 15, description = {
         "the node joins a fabric of nodes through this MQTT 5 broker, e.g. tcp://127.0.0.1:1883",
         "(federation/README.md); without it the node runs alone"})
@@ -203,8 +207,11 @@ final class OptionsParser {
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
         Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
         long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
+        if (traffic && noTraffic) {
+            throw new UsageException("--traffic and --no-traffic: choose one");
+        }
         return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
-                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), traffic, fabric);
+                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), !noTraffic, fabric);
     }
 
     /** {@code --broker} and {@code --fabric-key}, checked: a URI a fabric node connects to, a readable key. */

@@ -95,7 +95,10 @@ final class ScenarioRunner {
         }
     }
 
-    /** With --traffic, a map the planner cannot guarantee progress on is refused before anything starts. */
+    /**
+     * With the traffic planner (the default), a map the planner cannot guarantee progress on is refused before
+     * anything starts; {@code --no-traffic} runs it without the planner.
+     */
     private void checkTraffic(WarehouseMap map) throws UsageException {
         if (!options.traffic()) {
             return;
@@ -103,8 +106,8 @@ final class ScenarioRunner {
         var traffic = eu.brain.iot.behaviours.warehouse.traffic.TrafficMap.parse(String.join("\n", map.terrainRows()));
         var why = eu.brain.iot.behaviours.warehouse.traffic.MapCheck.refusal(traffic, TRAFFIC_WINDOW);
         if (why.isPresent()) {
-            throw new UsageException("--traffic: the traffic planner refuses the map '" + map.name() + "': "
-                    + why.get());
+            throw new UsageException("the traffic planner refuses the map '" + map.name() + "': " + why.get()
+                    + " (--no-traffic runs it without the planner)");
         }
     }
 

@@ -26,7 +26,20 @@ class OptionsParserTest {
         assertThat(o.waitLimitSteps()).as("robot-sim's --deadlock-steps").isEqualTo(20);
         assertThat(o.deadlineMs()).isEqualTo(30 * 60_000);
         assertThat(o.behaviours()).isTrue();
+        assertThat(o.traffic()).as("the traffic planner drives the robots").isTrue();
         assertThat(o.report()).isEqualTo(o.runDir().resolve("report.json"));
+    }
+
+    @Test
+    void noTrafficRunsTheFleetWithoutThePlanner() throws Exception {
+        assertThat(OptionsParser.parse("--no-traffic").traffic()).isFalse();
+        assertThat(OptionsParser.parse("--traffic").traffic()).isTrue();
+        assertThat(BehaviourSettings.forRun(OptionsParser.parse("--no-traffic")).get(BehaviourSettings.ROBOT_PID))
+                .containsEntry("traffic", false);
+        assertThat(BehaviourSettings.forRun(OptionsParser.parse()).get(BehaviourSettings.ROBOT_PID))
+                .containsEntry("traffic", true);
+        assertThatThrownBy(() -> OptionsParser.parse("--traffic", "--no-traffic"))
+                .hasMessage("--traffic and --no-traffic: choose one");
     }
 
     @Test

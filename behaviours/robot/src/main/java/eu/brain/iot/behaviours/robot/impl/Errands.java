@@ -18,11 +18,11 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * {@code RobotSmartBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
  * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
- * outside storage that is nearest by path, while the wave is open ({@link #waveOpen}); when it lifts it, it is given
- * the free storage cell that a robot carrying a cart can reach around the other carts, whose cart cuts no free
- * storage cell (nor the cell another robot carries its cart to) off from where the carts come from, and that makes
- * the rest of the trip shortest (the path there plus the distance from it to the robot's dock); after placing it,
- * it heads for its dock (the docking cell where it was first seen).
+ * outside storage that is nearest by path (or farthest, {@link CartRelease}), while the wave is open
+ * ({@link #waveOpen}); when it lifts it, it is given the free storage cell that a robot carrying a cart can reach
+ * around the other carts, whose cart cuts no free storage cell (nor the cell another robot carries its cart to) off
+ * from where the carts come from, and that makes the rest of the trip shortest (the path there plus the distance
+ * from it to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
  * <p>
  * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
  * another lock while holding its own).
@@ -46,8 +46,8 @@ final class Errands {
     }
 
     private final Map<String, Errand> errands = new HashMap<>();
-    /** Robots that may go for carts at once (the wave's size). */
-    private final int wave;
+    /** When a robot without an errand may claim a cart, and which. */
+    private final CartRelease release;
     private final Map<String, Cell> docks = new HashMap<>();
     /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
     private final Map<String, Cell> remembered = new HashMap<>();
@@ -57,9 +57,14 @@ final class Errands {
     private final Set<Cell> drops = new HashSet<>();
     private int delivered;
 
-    /** @param wave robots that may go for carts at once (at least 1) */
+    /** @param wave robots that may go for carts at once, in waves (at least 1) */
     Errands(int wave) {
-        this.wave = Math.max(1, wave);
+        this(CartRelease.waves(wave));
+    }
+
+    /** @param release when a robot without an errand may claim a cart, and which */
+    Errands(CartRelease release) {
+        this.release = release;
     }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
@@ -249,17 +254,19 @@ final class Errands {
     }
 
     /**
-     * The door policy: carts are fetched in waves, so the robots cross the door in one direction at a time. A robot
-     * may claim a cart while no robot carries one (the wave has not started back: no robot comes up through the door
-     * against the robots going down) and fewer than {@code wave} robots go for carts. Once a robot lifts its cart,
-     * no new claim until every cart of the wave is placed in storage; then the next wave goes down.
+     * The door policy ({@link CartRelease}): in waves, a robot may claim a cart while no robot carries one (the wave
+     * has not started back: no robot comes up through the door against the robots going down) and fewer than a
+     * wave's robots go for carts; once a robot lifts its cart, no new claim until every cart of the wave is placed in
+     * storage, then the next wave goes down. Released continuously (the traffic planner), a robot may claim while
+     * fewer than its share of robots per door go for carts.
      *
+     * @param grid the map (its doors)
      * @return whether a robot without an errand may claim a cart now
      */
-    synchronized boolean waveOpen() {
+    synchronized boolean waveOpen(Grid grid) {
         long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
         boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
-        return !carrying && toCart < wave;
+        return release.open(toCart, carrying, grid.cells(Grid.DOORWAY).size());
     }
 
     /** @return the errands of the robots going for a cart (copies) */
@@ -267,18 +274,25 @@ final class Errands {
         return errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).toList();
     }
 
-    /** Claims the nearest waiting cart for a robot without an errand, when the wave is open ({@link #waveOpen}). */
+    /**
+     * Claims the nearest waiting cart (released continuously through one door: the farthest, {@link CartRelease}) for a
+     * robot without an errand, when the wave is open ({@link #waveOpen}).
+     */
     synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
-        if (!waveOpen()) {
+        if (!waveOpen(grid)) {
             return Optional.empty();
         }
         CartState best = null;
         int bestSteps = Integer.MAX_VALUE;
+        int doors = grid.cells(Grid.DOORWAY).size();
         for (CartState c : carts) {
             if (!waiting(c, grid) || claimed(c.id())) {
                 continue;
             }
             int steps = grid.steps(at, c.cell(), Set.of());
+            if (release.farthestFirst(doors)) {
+                steps = -steps;
+            }
             if (steps < bestSteps) {
                 best = c;
                 bestSteps = steps;

@@ -44,6 +44,12 @@ public @interface RobotConfig {
      */
     boolean traffic() default false;
 
+    /**
+     * With the traffic planner: robots per door that may go for carts at once (released continuously, each robot as
+     * soon as it is back at its dock: {@code CartRelease}).
+     */
+    int traffic_release_robots_per_door() default CartRelease.ROBOTS_PER_DOOR;
+
     /** Steps of 0.5 s the traffic planner reserves ahead (longer than the map's longest one-cell passage). */
     int traffic_window() default 16;
 }

@@ -91,7 +91,9 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
-        this.errands = new Errands(config.traffic() ? Integer.MAX_VALUE : config.wave_robots());
+        this.errands = new Errands(
+                config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
+                        : CartRelease.waves(config.wave_robots()));
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
@@ -369,7 +371,8 @@ public final class RobotFleet {
 
     /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
     boolean mayStart() {
-        return errands.waveOpen() && workLeft();
+        Optional<Grid> grid = view.grid();
+        return grid.isPresent() && errands.waveOpen(grid.get()) && workLeft();
     }
 
     /** The robot is docked: its errand is over. */

@@ -54,6 +54,8 @@ final class TrafficControl {
     /** When each robot was last sent on a leg (a go-to the edge has not shown yet counts as driven along). */
     private final Map<String, Long> legSince = new HashMap<>();
     private final long pendingNanos;
+    /** Robots seen offline and not sent on a leg since (the first leg after is logged: it shows they drive on). */
+    private final java.util.Set<String> wereOffline = new java.util.HashSet<>();
     /** Looks in a row each robot on a leg stood behind another robot. */
     private final Map<String, Integer> blockedLooks = new HashMap<>();
     /** A robot's front sensor: a robot in front ({@code detect} 1). */
@@ -119,6 +121,9 @@ final class TrafficControl {
                 continue;
             }
             states.put(s.id(), s);
+            if (!s.reachable()) {
+                wereOffline.add(s.id());
+            }
             Cell goal = goals.get(s.id());
             int at = map.cell(s.cell());
             planner.robot(r, at, goal == null ? FleetPlanner.NO_GOAL : map.cell(goal), s.carrying(), !s.reachable());
@@ -234,6 +239,10 @@ final class TrafficControl {
         go.x = end.x();
         go.y = end.y();
         counts.reservedGoTos.incrementAndGet();
+        if (wereOffline.remove(s.id())) {
+            LOG.log(System.Logger.Level.INFO, "{0} drives on along its reserved path, back online: to {1}", s.id(),
+                    end);
+        }
         commands.send(go, "a leg of its reserved path to " + end);
     }
 
