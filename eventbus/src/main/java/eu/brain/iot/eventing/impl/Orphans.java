@@ -1,5 +1,6 @@
 package eu.brain.iot.eventing.impl;
 
+import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
 import java.util.function.Consumer;
@@ -31,8 +32,19 @@ final class Orphans implements Consumer<Envelope> {
     /** A forwarder's queued events as held events, to join the hold in their order (see the bus's removal). */
     static List<Held> held(List<Envelope> queued) {
         long now = System.currentTimeMillis();
-        return queued.stream().map(e -> new Held(e.payload, e.payload instanceof BrainIoTEvent ? e.payload.getClass()
-                : null, e.counters, now, null)).toList();
+        List<Held> held = new ArrayList<>(queued.size());
+        for (Envelope e : queued) {
+            // a shared snapshot is read by the event's other consumers: the one that takes it over gets its own
+            Object own = e.exclusive ? e.payload : copy(e.payload);
+            held.add(new Held(own, own instanceof BrainIoTEvent ? own.getClass() : null, e.counters, now, null));
+        }
+        return held;
+    }
+
+    @SuppressWarnings("unchecked")
+    private static Object copy(Object payload) {
+        return payload instanceof BrainIoTEvent event ? EventCopier.copyEvent(event)
+                : EventMaps.copyMap((Map<String, ?>) payload);
     }
 
     @Override
