@@ -1,5 +1,6 @@
 package eu.brain.iot.behaviours.warehouse;
 
+import java.util.concurrent.Future;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
@@ -29,9 +30,12 @@ public final class BindingThread implements AutoCloseable {
         });
     }
 
-    /** Starts the looks, once the binding is fully built: {@code look} runs on this thread once per period. */
-    public void start(Runnable look) {
-        executor.scheduleWithFixedDelay(look, periodNanos, periodNanos, TimeUnit.NANOSECONDS);
+    /**
+     * Starts the looks, once the binding is fully built: {@code look} runs on this thread once per period until the
+     * returned future is cancelled (or the thread closed).
+     */
+    public Future<?> start(Runnable look) {
+        return executor.scheduleWithFixedDelay(look, periodNanos, periodNanos, TimeUnit.NANOSECONDS);
     }
 
     /** @return the wall time between two looks, in nanoseconds */

@@ -19,14 +19,37 @@ package eu.brain.iot.behaviours.warehouse;
 public record RobotState(String id, Cell cell, String heading, int area, boolean running, int detect, String cart,
         Long missionId, String missionType, String missionState, Cell goal, boolean reachable) {
 
+    /** {@link #detect}: the front sensor sees nothing. */
+    public static final int DETECTS_NOTHING = 0;
+    /** {@link #detect}: a robot in the cell in front. */
+    public static final int DETECTS_ROBOT = 1;
+    /** {@link #detect}: a closed (or not yet open) door in the cell in front. */
+    public static final int DETECTS_DOOR = 2;
+    /** {@link #missionType}: a go-to. */
+    public static final String GOTO = "goto";
+    /** {@link #missionState}: the mission ended as asked. */
+    public static final String FINISHED = "finished";
+    /** {@link #missionState}: the mission ended without reaching its end (refused by the fleet, no path, cancelled). */
+    public static final String FAILED = "failed";
+
+    /** @return whether its front sensor sees a robot in the cell in front */
+    public boolean facesRobot() {
+        return detect == DETECTS_ROBOT;
+    }
+
+    /** @return whether its front sensor sees a door that is not open in the cell in front */
+    public boolean facesDoor() {
+        return detect == DETECTS_DOOR;
+    }
+
     /** @return whether it has no mission waiting or running (none yet, or the last one ended) */
     public boolean idle() {
-        return missionState == null || "finished".equals(missionState) || "failed".equals(missionState);
+        return missionState == null || FINISHED.equals(missionState) || FAILED.equals(missionState);
     }
 
     /** @return whether its running or next mission is a go-to to {@code to} */
     public boolean headingFor(Cell to) {
-        return !idle() && "goto".equals(missionType) && to.equals(goal);
+        return !idle() && GOTO.equals(missionType) && to.equals(goal);
     }
 
     /** @return the cell in front of it */

@@ -174,7 +174,7 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
                     continue;
                 }
                 boolean someoneNear = robots.stream().anyMatch(r -> r.cell().distance(d.cell()) <= near
-                        || r.detect() == 2 && r.ahead().equals(d.cell()));
+                        || r.facesDoor() && r.ahead().equals(d.cell()));
                 int quiet = someoneNear ? 0 : quietLooks.getOrDefault(d.id(), 0) + 1;
                 quietLooks.put(d.id(), quiet);
                 if (quiet == closeAfter) {

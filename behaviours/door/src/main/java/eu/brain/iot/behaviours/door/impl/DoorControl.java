@@ -48,7 +48,7 @@ public final class DoorControl {
     void openForWaitingRobot(String group) {
         List<DoorState> doors = view.doors();
         List<RobotState> robots = view.robots().stream().filter(r -> RobotNames.inGroup(r.id(), group)).toList();
-        Optional<DoorState> door = robots.stream().filter(r -> r.detect() == 2)
+        Optional<DoorState> door = robots.stream().filter(RobotState::facesDoor)
                 .flatMap(r -> doors.stream().filter(d -> d.cell().equals(r.ahead()))).findFirst();
         if (door.isEmpty()) {
             door = doors.stream().min(Comparator.comparingInt(d -> robots.stream()

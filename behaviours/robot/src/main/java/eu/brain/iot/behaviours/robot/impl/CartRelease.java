@@ -1,5 +1,12 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.List;
+import java.util.Optional;
+
+import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotNames;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+
 /**
  * When a robot without an errand may claim a cart, and which: how the fleet is released towards the doors.
  * <ul>
@@ -13,10 +20,11 @@ package eu.brain.iot.behaviours.robot.impl;
  * doors, the nearest (the farthest was across the warehouse, through another door: 120x40, 60 robots, 3 doors,
  * seeds 11 and 12, 34-36% of the bound instead of 58-63%).</li>
  * </ul>
- * Why (60x30, 30 robots, 1 door, seeds 11 and 12, speed 5): with waves as large as the fleet, the whole fleet went
- * down, came back up, and robots docked late crossed an idle door alone: 58-61% of the bound. Released
- * continuously: 64-78%, nearest carts first, every robot at once, the robots waiting behind others 3-4% of the
- * time; 75-76% with at most 10 robots per door going for carts and farthest carts first, waiting 1.2-1.5%.
+ * Released in waves, a robot carrying its cart back through the door also waits until every robot of the wave going
+ * for a cart is down ({@link #mayCarryBack}), so that the door is crossed one way at a time. Released continuously,
+ * robots go as soon as they are back: a wave as large as the fleet leaves robots that docked late crossing an idle
+ * door alone, and more robots per door than the door can pass only queue behind it (BENCHMARKS.md, "With the
+ * traffic planner", has the figures of each choice).
  * <p>
  * Immutable: any thread.
  */
@@ -61,6 +69,40 @@ final class CartRelease {
      */
     boolean farthestFirst(int doors) {
         return perDoor && doors == 1;
+    }
+
+    /**
+     * Whether a robot carrying a cart back through the door may set off: released continuously, at once (the
+     * planner's reservations take the door one way at a time); in waves, once every robot of the wave going for a
+     * cart is down (in the unload area, at its cart, or stopped behind a carrier, which must move first), in a fleet
+     * larger than one group (three robots): in the paper's warehouse the orchestrator resolves the meetings at the
+     * door (Listing 7); in a larger fleet one robot still coming down met the wave's carriers queued at the door, and
+     * they all waited longer than REQ-2 allows for its side step. A robot the edge cannot reach is not waited for.
+     *
+     * @param robot         the carrier
+     * @param goingForCarts the errands of the robots going for carts
+     * @param robots        every robot now
+     */
+    boolean mayCarryBack(String robot, List<Errands.Errand> goingForCarts, List<RobotState> robots) {
+        if (perDoor || robots.size() <= RobotNames.PER_GROUP) {
+            return true;
+        }
+        for (Errands.Errand e : goingForCarts) {
+            if (e.robot().equals(robot)) {
+                continue;
+            }
+            Optional<RobotState> s = robots.stream().filter(r -> r.id().equals(e.robot())).findFirst();
+            if (s.isPresent() && s.get().reachable() && s.get().area() != Grid.UNLOAD
+                    && !s.get().cell().equals(e.cartCell()) && !behindACarrier(s.get(), robots)) {
+                return false;
+            }
+        }
+        return true;
+    }
+
+    /** A robot stopped behind one carrying a cart does not hold the carriers back: the one in its way must move. */
+    private static boolean behindACarrier(RobotState s, List<RobotState> robots) {
+        return s.facesRobot() && robots.stream().anyMatch(o -> o.cell().equals(s.ahead()) && o.carrying());
     }
 
     @Override

@@ -17,15 +17,12 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * enough because every robot instance of the model lives in one behaviour component (the generated
  * {@code RobotSmartBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
- * The rules (behaviours/README.md, "Errands"): a robot without an errand claims the unclaimed cart on the floor
- * outside storage that is nearest by path (or farthest, {@link CartRelease}), while the wave is open
- * ({@link #waveOpen}); when it lifts it, it is given the free storage cell that a robot carrying a cart can reach
- * around the other carts, whose cart cuts no free storage cell (nor the cell another robot carries its cart to) off
- * from where the carts come from, and that makes the rest of the trip shortest (the path there plus the distance
- * from it to the robot's dock); after placing it, it heads for its dock (the docking cell where it was first seen).
+ * The table keeps who does what; each decision is a policy of its own: when a robot may claim a cart
+ * ({@link CartRelease}), which cart ({@link CartChoice}), which storage cell once it lifted it ({@link StorageChoice}),
+ * and the dock of a robot met out on the floor ({@link DockingWay}). After placing its cart a robot heads for its dock
+ * (the docking cell where it was first seen). behaviours/README.md, "Errands", states the rules.
  * <p>
- * Thread-safe: every method is {@code synchronized} and calls nothing outside this class (so it never takes
- * another lock while holding its own).
+ * Not thread-safe: owned by the robot fleet's thread ({@link RobotFleet}).
  */
 final class Errands {
 
@@ -68,7 +65,7 @@ final class Errands {
     }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
-    synchronized void seen(String robot, Cell cell, boolean docking) {
+    void seen(String robot, Cell cell, boolean docking) {
         if (docking) {
             docks.putIfAbsent(robot, cell);
         }
@@ -95,7 +92,7 @@ final class Errands {
      * @param robots every robot now (their cells are not free docks)
      * @return whether it was taken over now (its first sight)
      */
-    synchronized boolean adopt(RobotState s, List<CartState> carts, Grid grid, List<RobotState> robots) {
+    boolean adopt(RobotState s, List<CartState> carts, Grid grid, List<RobotState> robots) {
         String robot = s.id();
         if (!adopted.add(robot)) {
             seen(s, grid);
@@ -135,28 +132,16 @@ final class Errands {
         return true;
     }
 
-    /**
-     * The dock of a robot first met out on the floor: the one an earlier run learnt for it, unless another robot has
-     * it now; else the nearest docking cell that is no robot's dock (nor remembered as one) and where no other robot
-     * stands, first among those next to no such cell (robots parked side by side at the edge of the docking area
-     * would stand in each other's way in and out), then among all.
-     */
+    /** The dock of a robot first met out on the floor ({@link DockingWay#dockFor}). */
     private Cell dockFor(String robot, Cell from, Grid grid, List<RobotState> robots) {
-        Cell known = remembered.get(robot);
-        if (known != null && !docks.containsValue(known)) {
-            return known;
-        }
         Set<Cell> taken = new HashSet<>(docks.values());
         remembered.forEach((r, c) -> taken.add(c));
         robots.stream().filter(o -> !o.id().equals(robot)).forEach(o -> taken.add(o.cell()));
-        Cell spaced = grid.nearest(from, c -> grid.area(c) == Grid.DOCKING && !taken.contains(c)
-                && grid.neighbours(c).stream().noneMatch(taken::contains), Set.of());
-        return spaced != null ? spaced
-                : grid.nearest(from, c -> grid.area(c) == Grid.DOCKING && !taken.contains(c), Set.of());
+        return DockingWay.dockFor(from, remembered.get(robot), new HashSet<>(docks.values()), taken, grid);
     }
 
     /** Docks an earlier run of this behaviour learnt, for robots not seen yet. */
-    synchronized void remember(Map<String, Cell> kept) {
+    void remember(Map<String, Cell> kept) {
         kept.forEach((robot, c) -> {
             if (!adopted.contains(robot)) {
                 remembered.put(robot, c);
@@ -165,12 +150,12 @@ final class Errands {
     }
 
     /** @return the docks learnt so far, a copy */
-    synchronized Map<String, Cell> docks() {
+    Map<String, Cell> docks() {
         return Map.copyOf(docks);
     }
 
     /** @return whether {@link #adopt} has taken the robot over already */
-    synchronized boolean knows(String robot) {
+    boolean knows(String robot) {
         return adopted.contains(robot);
     }
 
@@ -179,7 +164,7 @@ final class Errands {
      * and one standing idle out on the floor without an errand (the orchestrator sent it out of another robot's way)
      * goes home.
      */
-    synchronized void seen(RobotState s, Grid grid) {
+    void seen(RobotState s, Grid grid) {
         String robot = s.id();
         boolean docking = grid.area(s.cell()) == Grid.DOCKING;
         seen(robot, s.cell(), docking);
@@ -188,60 +173,16 @@ final class Errands {
         }
     }
 
-    synchronized Errand of(String robot) {
+    Errand of(String robot) {
         return errands.getOrDefault(robot, new Errand(robot, Leg.NONE, null, null, null, docks.get(robot)));
     }
 
     /**
-     * Where the robot crosses the edge of the docking area nearest to {@code from}: the nearest cell outside the
-     * docking area, reached through docking cells that are no other robot's dock. A robot going home is sent to the
-     * one nearest its dock first, then to its dock; a robot leaving the docking area is sent to the one nearest to
-     * it first, then on. robot-sim plans the shortest path, robots ignored: without this, robots ran along the docking
-     * rows past robots parked at their docks, which the orchestrator then sent aside one after the other (the
-     * 60x30 warehouse's longest waits, 10-15 s).
-     *
-     * @param from   the robot's dock (going home) or its cell (leaving)
-     * @param parked the cells of the other robots that stand idle in the docking area
-     * @return the cell, or {@code null} when none exists
+     * @param parked the cells where other robots stand parked in the docking area (their docks may not be known yet)
+     * @return the other robots' docks and {@code parked}: the cells a robot's way in and out of the docking area
+     *         avoids ({@link DockingWay})
      */
-    synchronized Cell edgeOfDocking(String robot, Cell from, Grid grid, Set<Cell> parked) {
-        Set<Cell> others = others(robot, parked);
-        others.remove(from);
-        return grid.nearest(from, c -> grid.area(c) != Grid.DOCKING, others);
-    }
-
-    /**
-     * The first straight leg of the way from {@code from} to {@code to} through no other robot's dock: robot-sim
-     * plans its own shortest path (A*, ties broken its way), which between two cells of one row or column is that
-     * straight line and nothing else, so a go-to to the end of the first straight leg takes the robot exactly there.
-     * Used in and next to the docking area, where two shortest paths may differ by running through a parked
-     * robot's dock.
-     *
-     * @return the end of the first straight leg, or {@code to} when there is no such way
-     */
-    synchronized Cell straightToward(String robot, Cell from, Cell to, Grid grid, Set<Cell> parked) {
-        Set<Cell> others = others(robot, parked);
-        others.remove(from);
-        others.remove(to);
-        List<Cell> path = grid.path(from, to, others);
-        if (path == null || path.isEmpty()) {
-            return to;
-        }
-        Cell last = path.get(0);
-        int dx = last.x() - from.x();
-        int dy = last.y() - from.y();
-        for (int i = 1; i < path.size(); i++) {
-            Cell c = path.get(i);
-            if (c.x() - last.x() != dx || c.y() - last.y() != dy) {
-                break;
-            }
-            last = c;
-        }
-        return last;
-    }
-
-    /** Other robots' docks, and the cells where other robots stand parked (their docks may not be known yet). */
-    private Set<Cell> others(String robot, Set<Cell> parked) {
+    Set<Cell> otherDocks(String robot, Set<Cell> parked) {
         Set<Cell> others = new HashSet<>(docks.values());
         others.addAll(parked);
         others.remove(docks.get(robot));
@@ -249,7 +190,7 @@ final class Errands {
     }
 
     /** @return whether some cart on the floor outside storage is claimed by nobody */
-    synchronized boolean workLeft(List<CartState> carts, Grid grid) {
+    boolean workLeft(List<CartState> carts, Grid grid) {
         return carts.stream().anyMatch(c -> waiting(c, grid) && !claimed(c.id()));
     }
 
@@ -263,14 +204,19 @@ final class Errands {
      * @param grid the map (its doors)
      * @return whether a robot without an errand may claim a cart now
      */
-    synchronized boolean waveOpen(Grid grid) {
+    boolean waveOpen(Grid grid) {
         long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
         boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
         return release.open(toCart, carrying, grid.cells(Grid.DOORWAY).size());
     }
 
+    /** @return whether a robot carrying a cart back may set off now ({@link CartRelease#mayCarryBack}) */
+    boolean mayCarryBack(String robot, List<RobotState> robots) {
+        return release.mayCarryBack(robot, goingForCarts(), robots);
+    }
+
     /** @return the errands of the robots going for a cart (copies) */
-    synchronized List<Errand> goingForCarts() {
+    List<Errand> goingForCarts() {
         return errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).toList();
     }
 
@@ -278,36 +224,25 @@ final class Errands {
      * Claims the nearest waiting cart (released continuously through one door: the farthest, {@link CartRelease}) for a
      * robot without an errand, when the wave is open ({@link #waveOpen}).
      */
-    synchronized Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
+    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
         if (!waveOpen(grid)) {
             return Optional.empty();
         }
-        CartState best = null;
-        int bestSteps = Integer.MAX_VALUE;
-        int doors = grid.cells(Grid.DOORWAY).size();
-        for (CartState c : carts) {
-            if (!waiting(c, grid) || claimed(c.id())) {
-                continue;
-            }
-            int steps = grid.steps(at, c.cell(), Set.of());
-            if (release.farthestFirst(doors)) {
-                steps = -steps;
-            }
-            if (steps < bestSteps) {
-                best = c;
-                bestSteps = steps;
-            }
-        }
-        if (best == null) {
+        List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
+        CartChoice.Order order = release.farthestFirst(grid.cells(Grid.DOORWAY).size()) ? CartChoice.Order.FARTHEST
+                : CartChoice.Order.NEAREST;
+        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid, order);
+        if (chosen.isEmpty()) {
             return Optional.empty();
         }
+        CartState best = chosen.get();
         Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
         errands.put(robot, e);
         return Optional.of(e);
     }
 
     /** The robot lifted its cart: it is given a storage cell, or none when no free one can be reached. */
-    synchronized Optional<Errand> lifted(String robot, Cell at, List<CartState> carts, Grid grid) {
+    Optional<Errand> lifted(String robot, Cell at, List<CartState> carts, Grid grid) {
         Errand e = of(robot);
         if (e.drop() != null) {
             drops.remove(e.drop()); // chosen again, with what the warehouse looks like now
@@ -315,21 +250,9 @@ final class Errands {
         Set<Cell> walls = new HashSet<>(drops); // storage cells given to carts, carried there or put down
         carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> walls.add(c.cell()));
         walls.remove(at); // the cart it lifts
-        Map<Cell, Integer> steps = distances(grid, at, walls);
         List<Cell> inFlight = errands.values().stream().filter(x -> x.leg() == Leg.TO_STORAGE && x.drop() != null
                 && !x.robot().equals(robot)).map(Errand::drop).toList();
-        List<Cell> free = grid.cells(Grid.STORAGE).stream().filter(steps::containsKey).toList();
-        // the rest of the trip counts too: a storage cell on the way home (near the dock's column) keeps the robots'
-        // ways home short and apart, instead of every robot crossing the docking rows to its dock
-        List<Cell> byTrip = free.stream().sorted(java.util.Comparator.comparingInt(
-                (Cell c) -> steps.get(c) + (e.dock() == null ? 0 : c.distance(e.dock())))).toList();
-        Cell best = null;
-        for (Cell c : byTrip) {
-            if (keepsStorageOpen(grid, at, c, walls, free, inFlight)) {
-                best = c;
-                break;
-            }
-        }
+        Cell best = StorageChoice.choose(grid, at, e.dock(), walls, inFlight);
         if (best == null) {
             errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), null, e.dock()));
             return Optional.empty(); // asked again when the robot goes on (a placed cart may free the way)
@@ -348,7 +271,7 @@ final class Errands {
      *
      * @return whether the errand changed
      */
-    synchronized boolean goalFailed(String robot, Cell at, Cell goal, List<CartState> carts, Grid grid) {
+    boolean goalFailed(String robot, Cell at, Cell goal, List<CartState> carts, Grid grid) {
         Errand e = errands.get(robot);
         if (e == null || goal == null || !goal.equals(e.goal())) {
             return false;
@@ -377,7 +300,7 @@ final class Errands {
      * behaviour took the robot over, or its pick failed): in storage it counts as placed and the robot heads home;
      * elsewhere the cart goes back to the table.
      */
-    synchronized void cartDown(String robot, Cell at, Grid grid) { // at: where the cart stands
+    void cartDown(String robot, Cell at, Grid grid) { // at: where the cart stands
         Errand e = errands.get(robot);
         if (e == null || e.leg() != Leg.TO_STORAGE) {
             return;
@@ -394,7 +317,7 @@ final class Errands {
     }
 
     /** The robot put its cart down in storage: it heads home. */
-    synchronized Errand placed(String robot) {
+    Errand placed(String robot) {
         Errand e = of(robot);
         delivered++;
         Errand next = new Errand(robot, Leg.TO_DOCK, null, null, null, e.dock());
@@ -403,62 +326,19 @@ final class Errands {
     }
 
     /** The robot is back at its dock: no errand. */
-    synchronized void docked(String robot) {
+    void docked(String robot) {
         errands.remove(robot);
     }
 
     /** The robot gives its cart back to the table (it cannot fetch it); another robot may claim it. */
-    synchronized void release(String robot) {
+    void release(String robot) {
         Errand e = errands.remove(robot);
         if (e != null && e.drop() != null) {
             drops.remove(e.drop());
         }
     }
 
-    /**
-     * A cart put down at {@code c} must not cut any free storage cell, nor a cell another robot is carrying its cart
-     * to, off from where the carts come from (the robot's cell, under the cart it lifted): robots carrying carts
-     * cannot drive under other carts, so storage filled in the wrong order walls its own free cells in (seen in the
-     * 60x30 warehouse: its storage spans the whole width between the door and the docks, and with 57 of 60 carts
-     * put down, the last three robots found no free storage cell they could reach).
-     */
-    private static boolean keepsStorageOpen(Grid grid, Cell from, Cell c, Set<Cell> walls, List<Cell> free,
-            List<Cell> inFlight) {
-        Set<Cell> blocked = new HashSet<>(walls);
-        blocked.add(c);
-        Map<Cell, Integer> after = distances(grid, from, blocked);
-        for (Cell f : free) {
-            if (!f.equals(c) && !after.containsKey(f)) {
-                return false;
-            }
-        }
-        for (Cell d : inFlight) { // reached when a neighbour is: the cell itself is the end of that robot's path
-            if (grid.neighbours(d).stream().noneMatch(after::containsKey)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** @return the steps from {@code from} to every cell reachable without entering a {@code blocked} cell */
-    private static Map<Cell, Integer> distances(Grid grid, Cell from, Set<Cell> blocked) {
-        Map<Cell, Integer> dist = new HashMap<>();
-        java.util.ArrayDeque<Cell> queue = new java.util.ArrayDeque<>();
-        dist.put(from, 0);
-        queue.add(from);
-        while (!queue.isEmpty()) {
-            Cell x = queue.poll();
-            for (Cell n : grid.neighbours(x)) {
-                if (!dist.containsKey(n) && !blocked.contains(n)) {
-                    dist.put(n, dist.get(x) + 1);
-                    queue.add(n);
-                }
-            }
-        }
-        return dist;
-    }
-
-    synchronized int delivered() {
+    int delivered() {
         return delivered;
     }
 

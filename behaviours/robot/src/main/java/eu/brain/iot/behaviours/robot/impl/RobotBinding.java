@@ -7,6 +7,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.Future;
 import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
@@ -74,8 +75,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * components with a service until someone gets it).
  * <p>
  * Threads: {@link #notify} (the bus's delivery thread) makes of every event a {@link RobotInput} ({@link #INPUTS}) and
- * hands it to the binding's own thread, which handles it ({@link InputHandler}), owns all of this class's state and is
- * the only one that evaluates the rules and publishes.
+ * hands it to the fleet's thread ({@link RobotFleet#thread()}), which handles it ({@link InputHandler}), owns all of
+ * this class's state (and the fleet's) and is the only one that evaluates the rules and publishes.
  */
 @Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { RobotPositionChanged.class, ObstacleDetected.class, ObstacleCleared.class,
@@ -111,7 +112,10 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private final EventBus bus;
     private final RobotSmartBehaviour model;
     private final long patienceNanos;
+    /** The fleet's thread, which owns this binding's state too. */
     private final BindingThread thread;
+    private final Future<?> looks;
+    private volatile boolean closed;
     private final RobotInput.Handler handler = new InputHandler();
     /** Event types delivered that {@link #INPUTS} does not know (none: see {@link #notify}), each logged once. */
     private final Set<Class<?>> dropped = ConcurrentHashMap.newKeySet();
@@ -134,17 +138,18 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         this.fleet = fleet;
         this.bus = bus;
         this.model = (RobotSmartBehaviour) model;
-        this.thread = new BindingThread("robot-binding", config.speed(), config.poll_period_ms());
+        this.thread = fleet.thread();
         this.pollNanos = thread.periodNanos();
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
-        thread.start(this::safeTick);
+        this.looks = thread.start(this::safeTick);
         LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
                 pollNanos / 1e6, patienceNanos / 1e6);
     }
 
     @Deactivate
     void deactivate() {
-        thread.close();
+        closed = true;
+        looks.cancel(false);
     }
 
     @Override
@@ -160,6 +165,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             return;
         }
         thread.execute(() -> {
+            if (closed) {
+                return;
+            }
             try {
                 input.handle(handler);
             } catch (RuntimeException e) {
@@ -265,6 +273,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         synchronized (model) {
             // one consistent look: the model's transitions (and the errand changes their extern functions make) run
             // under the model's lock, so places, data and errand are read between two transitions, never across one
+            if (fleet.effectsQueued(robot)) {
+                return; // a transition's extern functions still act on the fleet: the errand is not up to date yet
+            }
             places = places(in);
             data = data(in);
             e = fleet.errands().of(robot);
@@ -278,15 +289,16 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 && now - last.atNanos() < 4 * pollNanos) {
             return; // the model has not taken the last event yet: never the same event twice
         }
-        if (s.detect() == 1 && !s.running()) {
+        if (s.facesRobot() && !s.running()) {
             blockedSince.putIfAbsent(robot, now);
         } else {
             blockedSince.remove(robot);
         }
-        double area = Math.max(1, Math.min(3, s.area() == 0 || s.area() == 5 ? fleet.area(robot) : s.area()));
+        double area = Math.max(Grid.DOCKING, Math.min(Grid.STORAGE,
+                s.area() == Grid.CORRIDOR || s.area() == Grid.DOORWAY ? fleet.area(robot) : s.area()));
         switch (places.get(0)) {
             case "START" -> {
-                boolean waitsAtOpeningDoor = s.detect() == 2 && !doorAheadClosed(s);
+                boolean waitsAtOpeningDoor = s.facesDoor() && !doorAheadClosed(s);
                 if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
                         || fleet.mayStart())) {
                     unloadLocation(in, area);
@@ -353,7 +365,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     /** A stop in front of a closed door, or behind a robot for longer than the patience: reported. */
     private boolean obstacle(String robot, RobotState s, Instance in, double area, long now) {
-        if (s.detect() == 2 && doorAheadClosed(s) || closedDoorOnItsWay(s)) {
+        if (s.facesDoor() && doorAheadClosed(s) || closedDoorOnItsWay(s)) {
             fromUnloadObstacle(in, area, IS_DOOR);
             return true;
         }

@@ -27,7 +27,7 @@ public @interface RobotConfig {
 
     /**
      * Robots that go for carts at once: the door policy fetches carts in waves of at most this many robots, all
-     * crossing the door down, then all crossing it back with their carts ({@code Errands#waveOpen}). A larger wave
+     * crossing the door down, then all crossing it back with their carts ({@code CartRelease}). A larger wave
      * uses the door better and crowds the unload area and storage more: in the 60x30 warehouse (30 robots) waves of
      * 6 passed about 330 carts per warehouse hour with one wait of 10.5 s in 2 seeds of 3 (REQ-2's limit is 10 s),
      * waves of 4 about 230 with every wait under 7.5 s in 4 seeds of 4 (BENCHMARKS.md, "Warehouse scenario").

@@ -26,8 +26,8 @@ import eu.brain.iot.behaviours.warehouse.ModelInstance;
  * no fleet is expected and a move only says what it would do.
  * The functions act for the robot of the instance named by the last {@link #bipInstance} on the calling thread:
  * {@code Robot2} of group {@code g4} is robot11 ({@link ModelInstance}).
- * Thread-safe: the fleet reference is volatile, the fleet is thread-safe, the instance is kept per thread, the robots
- * warned about are a concurrent set.
+ * Thread-safe: the fleet reference is volatile, what the functions do to the fleet runs on the fleet's own thread
+ * ({@link RobotFleet#fromModel}), the instance is kept per thread, the robots warned about are a concurrent set.
  */
 @Component(service = RobotBehaviorExterns.class)
 public class RobotExterns implements RobotBehaviorExterns {
@@ -88,10 +88,11 @@ public class RobotExterns implements RobotBehaviorExterns {
     @Override
     public int liftCart(int robotId, int remaining) {
         int left = Math.max(0, remaining - 1);
+        String robot = robot(robotId);
         RobotFleet f = fleet;
         LOG.log(System.Logger.Level.INFO, "{0} lifts a cart (corkscrew); {1} cart(s) left", robot(robotId), left);
         if (f != null) {
-            f.lift(robot(robotId));
+            f.fromModel(robot(robotId), fleet -> fleet.lift(robot));
         }
         return left;
     }
@@ -116,10 +117,11 @@ public class RobotExterns implements RobotBehaviorExterns {
         if (!unmoved.isEmpty()) {
             unmoved.clear(); // the fleet is back: a new absence is warned about again
         }
+        String robot = robot(robotId);
         if (aside != null) {
-            f.sideStep(robot(robotId), aside);
+            f.fromModel(robot, fleet -> fleet.sideStep(robot, aside));
         } else {
-            f.resume(robot(robotId), "its errand");
+            f.fromModel(robot, fleet -> fleet.resume(robot, "its errand"));
         }
     }
 
@@ -128,7 +130,8 @@ public class RobotExterns implements RobotBehaviorExterns {
         RobotFleet f = fleet;
         LOG.log(System.Logger.Level.INFO, "{0} places its cart in storage", robot(robotId));
         if (f != null) {
-            f.place(robot(robotId));
+            String robot = robot(robotId);
+            f.fromModel(robot, fleet -> fleet.place(robot));
         }
     }
 }

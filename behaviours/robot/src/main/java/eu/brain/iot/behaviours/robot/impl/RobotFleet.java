@@ -1,20 +1,30 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.io.File;
+import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.Consumer;
 
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 
+import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.behaviours.warehouse.FleetView;
 import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -33,8 +43,12 @@ import eu.brain.iot.eventing.api.EventBus;
  * {@code command.retries} times, then the errand is planned anew (the cart goes back to the claim table). Where
  * the errands go is the {@link Errands} table's; where the robots and carts are, the edge's device model's.
  * <p>
- * Thread-safe: called by the extern functions (on the bus's delivery thread of the robot behaviour) and by the
- * binding's thread; its maps are concurrent, the errand table locks itself, the ledger is thread-safe.
+ * Threads: the fleet's state (errands, pending go-tos, robots aside, refusals, the traffic planner) has one owner,
+ * the fleet's thread ({@link #thread()}), on which the binding looks at the robots and handles the edge's events.
+ * The extern functions run on the bus's thread, inside a transition of the model and under its lock: what they do to
+ * the fleet they hand to the fleet's thread ({@link #fromModel}), and until that has run the binding leaves the robot
+ * alone ({@link #effectsQueued}), so that it never reads a place of the model without the errand that goes with it.
+ * Read from any thread: the device model ({@link #position}, {@link #area}) and the counters.
  */
 @Component(service = RobotFleet.class, configurationPid = RobotConfig.PID)
 public final class RobotFleet {
@@ -46,31 +60,26 @@ public final class RobotFleet {
     private final RobotCommands commands;
     private final Errands errands;
     private final int retries;
+    /** Owns the fleet's state: the binding's looks and events, and the extern functions' effects. */
+    private final BindingThread thread;
+    /** Per robot, the extern functions' effects handed to the fleet's thread and not run yet (any thread). */
+    private final Map<String, Integer> queued = new ConcurrentHashMap<>();
+
+    // the fleet's thread only
     /**
      * The goal of the last go-to sent to each robot and when, until that mission ends (so it is never sent twice);
      * one the robot does not show after {@link #pendingNanos} is taken as lost (its end was missed).
      */
-    private final Map<String, SentGoal> sentGoal = new ConcurrentHashMap<>();
+    private final Map<String, SentGoal> sentGoal = new HashMap<>();
     private final long pendingNanos;
 
     private record SentGoal(Cell goal, long atNanos) {
     }
 
-    /**
-     * Each robot told to step aside: the cell, the robot it lets pass, and when, until it leaves that cell.
-     */
-    private final Map<String, Aside> aside = new ConcurrentHashMap<>();
-    /** How long a robot waits aside at most (warehouse time: 20 polls), should the robot it let pass stop near it. */
-    private final long asideNanos;
-
-    /**
-     * A robot stepping aside: to {@code cell}, for {@code passer} (the robot it met; {@code null} when none was seen
-     * in front of it), since {@code atNanos}.
-     */
-    private record Aside(Cell cell, String passer, long atNanos) {
-    }
+    /** The robots told to step aside, each until it is done waiting there. */
+    private final SideSteps aside;
     /** Refusals in a row per robot. */
-    private final Map<String, Integer> refusals = new ConcurrentHashMap<>();
+    private final Map<String, Integer> refusals = new HashMap<>();
     private final AtomicLong replans = new AtomicLong();
     /** Go-tos sent to robots, along reserved paths or not. */
     private final AtomicLong goTos = new AtomicLong();
@@ -80,13 +89,13 @@ public final class RobotFleet {
     /** The docks learnt, kept for a run of this behaviour started again, and the map they were read for. */
     static final String DOCK_BOOK = "docks.tsv";
     private final DockBook book;
-    private volatile Grid bookOf;
+    private Grid bookOf;
 
     @Activate
     public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config,
             BundleContext context) {
         this.view = new FleetView(model);
-        java.io.File data = context == null ? null : context.getDataFile(DOCK_BOOK);
+        File data = context == null ? null : context.getDataFile(DOCK_BOOK);
         this.book = new DockBook(data == null ? null : data.toPath());
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
@@ -95,11 +104,51 @@ public final class RobotFleet {
                 config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
                         : CartRelease.waves(config.wave_robots()));
         double speed = config.speed() > 0 ? config.speed() : 1;
-        long pollNanos = (long) (java.util.concurrent.TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
+        long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
                 ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
-        this.asideNanos = pollNanos * 20;
+        this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
+        this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
+    }
+
+    @Deactivate
+    void deactivate() {
+        thread.close();
+    }
+
+    /** @return the thread that owns the fleet's state, on which the binding runs its looks and handles events */
+    BindingThread thread() {
+        return thread;
+    }
+
+    /**
+     * An extern function's effect on the robot (called on the bus's thread, in a transition of the model, under its
+     * lock): run on the fleet's thread, after what is queued there.
+     */
+    void fromModel(String robot, Consumer<RobotFleet> effect) {
+        queued.merge(robot, 1, Integer::sum);
+        try {
+            thread.execute(() -> {
+                try {
+                    effect.accept(this);
+                } catch (RuntimeException e) {
+                    LOG.log(System.Logger.Level.WARNING, robot + ": an extern function's effect failed", e);
+                } finally {
+                    queued.computeIfPresent(robot, (r, n) -> n > 1 ? n - 1 : null);
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            queued.remove(robot); // the fleet is going away: no effect on anything any more
+        }
+    }
+
+    /**
+     * @return whether an extern function's effect on the robot is still queued on the fleet's thread (read under
+     *         the model's lock: a transition and the hand-over of its effects happen together under it)
+     */
+    boolean effectsQueued(String robot) {
+        return queued.containsKey(robot);
     }
 
     FleetView view() {
@@ -181,15 +230,8 @@ public final class RobotFleet {
             return;
         }
         RobotState s = state.get();
-        Aside side = aside.get(robot);
-        if (side != null) {
-            if (!s.cell().equals(side.cell()) && !s.idle()) {
-                return; // still on its way aside
-            }
-            if (s.cell().equals(side.cell()) && stillPassing(s, side)) {
-                return; // it waits aside until the robot it let pass is gone
-            }
-            aside.remove(robot);
+        if (aside.holds(s, view::robot)) {
+            return; // on its way aside, or waiting there until the robot it let pass is gone
         }
         adopt(s);
         Errands.Errand e = errands.of(robot);
@@ -220,41 +262,18 @@ public final class RobotFleet {
     }
 
     /**
-     * The way in and out of the docking area ({@link Errands#edgeOfDocking}, {@link Errands#straightToward}): a
-     * robot out on the floor going to its dock is sent first to the floor cell where its dock meets the floor, then
-     * into the docking area leg by straight leg, through no other robot's dock; a robot in the docking area going
-     * out onto the floor is sent leg by straight leg to the floor cell nearest to it. At the end of each leg the
-     * binding finds it idle before its goal and sends it on. Any other goal is kept: on the floor robot-sim plans.
+     * The way in and out of the docking area ({@link DockingWay}), without the traffic planner: at the end of each
+     * straight leg the binding finds the robot idle before its goal and sends it on. Any other goal is kept.
      */
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
-        boolean inDocking = grid.area(s.cell()) == Grid.DOCKING;
-        Cell dock = errands.of(robot).dock();
-        if (traffic != null || !inDocking && !goal.equals(dock)) {
+        if (traffic != null) {
             return goal;
         }
         // the others parked in the docking area: at the start, before every robot was seen, their docks are unknown
-        java.util.Set<Cell> parked = new java.util.HashSet<>();
+        Set<Cell> parked = new HashSet<>();
         view.robots().stream().filter(o -> !o.id().equals(robot) && o.idle() && grid.area(o.cell()) == Grid.DOCKING)
                 .forEach(o -> parked.add(o.cell()));
-        if (!inDocking) {
-            Cell edge = errands.edgeOfDocking(robot, dock, grid, parked);
-            return edge != null && !edge.equals(s.cell()) ? edge
-                    : errands.straightToward(robot, s.cell(), goal, grid, parked);
-        }
-        Cell target = grid.area(goal) == Grid.DOCKING ? goal : errands.edgeOfDocking(robot, s.cell(), grid, parked);
-        return target == null ? goal : errands.straightToward(robot, s.cell(), target, grid, parked);
-    }
-
-    /**
-     * Whether the robot that {@code s} stepped aside for still comes by: it is within two cells and still on a
-     * mission. Only that robot is waited for (two robots sent aside near each other would otherwise wait for each other
-     * for ever), and for {@link #asideNanos} at most.
-     */
-    private boolean stillPassing(RobotState s, Aside side) {
-        if (System.nanoTime() - side.atNanos() > asideNanos || side.passer() == null) {
-            return false;
-        }
-        return view.robot(side.passer()).filter(p -> p.cell().distance(s.cell()) <= 2 && !p.idle()).isPresent();
+        return DockingWay.next(s.cell(), goal, errands.of(robot).dock(), grid, errands.otherDocks(robot, parked));
     }
 
     /**
@@ -268,10 +287,10 @@ public final class RobotFleet {
         }
         String passer = view.robot(robot).flatMap(me -> view.robots().stream()
                 .filter(o -> o.cell().equals(me.ahead())).map(RobotState::id).findFirst()).orElse(null);
-        aside.put(robot, new Aside(cell, passer, System.nanoTime()));
+        aside.told(robot, cell, passer);
         CancelMissionCommand cancel = new CancelMissionCommand();
         cancel.deviceId = robot;
-        cancel.missionType = "goto";
+        cancel.missionType = RobotState.GOTO;
         send(cancel, "stepping aside to " + cell);
         sentGoal.remove(robot);
         GoToCommand go = new GoToCommand();
@@ -332,41 +351,9 @@ public final class RobotFleet {
         return grid.isPresent() && errands.workLeft(view.carts(), grid.get());
     }
 
-    /**
-     * The door policy's second half: a robot carrying a cart back through the door sets off only once every robot
-     * of the wave going for a cart is down (in the unload area, or at its cart), so the door is crossed one way at a
-     * time, in a fleet larger than one group (three robots): in the paper's warehouse the orchestrator resolves the
-     * meetings at the door ({@link Errands#waveOpen} is the first half). A robot the edge cannot reach is not waited
-     * for.
-     */
+    /** @return whether a robot carrying a cart back may set off now ({@link CartRelease#mayCarryBack}) */
     boolean mayCarryBack(String robot) {
-        if (traffic != null) {
-            return true; // the planner's reservations take the door one way at a time
-        }
-        List<Errands.Errand> down = errands.goingForCarts();
-        List<RobotState> robots = view.robots();
-        if (robots.size() <= eu.brain.iot.behaviours.warehouse.RobotNames.PER_GROUP) {
-            // the paper's warehouse (one group): meetings at the door are the orchestrator's (Listing 7); in a larger
-            // fleet one robot still coming down met the wave's carriers queued at the door, and they all waited
-            // longer than REQ-2 allows for its side step
-            return true;
-        }
-        for (Errands.Errand e : down) {
-            if (e.robot().equals(robot)) {
-                continue;
-            }
-            Optional<RobotState> s = view.robot(e.robot());
-            if (s.isPresent() && s.get().reachable() && s.get().area() != Grid.UNLOAD
-                    && !s.get().cell().equals(e.cartCell()) && !behindACarrier(s.get(), robots)) {
-                return false;
-            }
-        }
-        return true;
-    }
-
-    /** A robot stopped behind one carrying a cart does not hold the carriers back: the one in its way must move. */
-    private static boolean behindACarrier(RobotState s, List<RobotState> robots) {
-        return s.detect() == 1 && robots.stream().anyMatch(o -> o.cell().equals(s.ahead()) && o.carrying());
+        return errands.mayCarryBack(robot, view.robots());
     }
 
     /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
@@ -383,7 +370,7 @@ public final class RobotFleet {
     /** A mission of the robot ended: a go-to to the goal last sent is no longer pending. */
     void missionEnded(String robot, String type, Integer goalX, Integer goalY) {
         SentGoal sent = sentGoal.get(robot);
-        if ("goto".equals(type) && sent != null && goalX != null && sent.goal().equals(new Cell(goalX, goalY == null
+        if (RobotState.GOTO.equals(type) && sent != null && goalX != null && sent.goal().equals(new Cell(goalX, goalY == null
                 ? -1 : goalY))) {
             sentGoal.remove(robot);
         }
@@ -397,7 +384,7 @@ public final class RobotFleet {
         missionEnded(robot, type, goalX, goalY);
         Optional<RobotState> s = view.robot(robot);
         Optional<Grid> grid = view.grid();
-        if ("goto".equals(type) && goalX != null && goalY != null && s.isPresent() && grid.isPresent()
+        if (RobotState.GOTO.equals(type) && goalX != null && goalY != null && s.isPresent() && grid.isPresent()
                 && errands.goalFailed(robot, s.get().cell(), new Cell(goalX, goalY), view.carts(), grid.get())) {
             Errands.Errand e = errands.of(robot);
             LOG.log(System.Logger.Level.WARNING, "{0}: its go-to to ({1},{2}) failed ({3}); {4}", robot, goalX, goalY,

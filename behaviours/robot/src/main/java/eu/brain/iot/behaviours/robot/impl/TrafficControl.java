@@ -3,10 +3,11 @@ package eu.brain.iot.behaviours.robot.impl;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.concurrent.ConcurrentHashMap;
+import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
 
 import eu.brain.iot.behaviours.warehouse.Cell;
@@ -28,9 +29,8 @@ import eu.brain.iot.edge.api.GoToCommand;
  * whom). A robot driving along a leg keeps it (the planner plans around it); a robot whose plan says wait gets no
  * go-to. An offline robot is an obstacle that holds its cell until it is seen again.
  * <p>
- * Threads: {@link #goal}, {@link #clear} and the counters may be called from any thread (the extern functions on
- * the bus's thread); everything else, the planner included, is owned by the binding's thread, which calls
- * {@link #step} once per look.
+ * Threads: owned by the robot fleet's thread ({@link RobotFleet}), which calls {@link #step} once per look; the
+ * counters are read from any thread.
  */
 final class TrafficControl {
     private static final System.Logger LOG = System.getLogger(TrafficControl.class.getName());
@@ -41,9 +41,7 @@ final class TrafficControl {
     private final RobotCommands commands;
     private final CommandLedgerCounts counts;
     private final int window;
-    private final Map<String, Cell> goals = new ConcurrentHashMap<>();
-
-    // binding thread only
+    private final Map<String, Cell> goals = new HashMap<>();
     private FleetPlanner planner;
     private TrafficMap map;
     private String refused;
@@ -55,11 +53,9 @@ final class TrafficControl {
     private final Map<String, Long> legSince = new HashMap<>();
     private final long pendingNanos;
     /** Robots seen offline and not sent on a leg since (the first leg after is logged: it shows they drive on). */
-    private final java.util.Set<String> wereOffline = new java.util.HashSet<>();
+    private final Set<String> wereOffline = new HashSet<>();
     /** Looks in a row each robot on a leg stood behind another robot. */
     private final Map<String, Integer> blockedLooks = new HashMap<>();
-    /** A robot's front sensor: a robot in front ({@code detect} 1). */
-    private static final int BEHIND_A_ROBOT = 1;
     /** Looks a robot on a leg may stand behind another before its leg is cancelled and planned again. */
     private static final int BLOCKED_LOOKS = 3;
 
@@ -83,7 +79,7 @@ final class TrafficControl {
         return counts;
     }
 
-    /** The robot's errand goes to this cell now (any thread). */
+    /** The robot's errand goes to this cell now. */
     void goal(String robot, Cell cell) {
         goals.put(robot, cell);
     }
@@ -98,7 +94,7 @@ final class TrafficControl {
         return Optional.ofNullable(refused);
     }
 
-    /** One look: plans every robot and sends the robots standing still on their next legs. Binding thread. */
+    /** One look: plans every robot and sends the robots standing still on their next legs. */
     void step() {
         Optional<Grid> grid = view.grid();
         List<RobotState> robots = view.robots();
@@ -134,7 +130,7 @@ final class TrafficControl {
         counts.planNanos.addAndGet(System.nanoTime() - t0);
         counts.rounds.incrementAndGet();
         for (RobotState s : states.values()) {
-            if (s.reachable() && !s.idle() && s.detect() == BEHIND_A_ROBOT && !s.running()) {
+            if (s.reachable() && !s.idle() && s.facesRobot() && !s.running()) {
                 if (blockedLooks.merge(s.id(), 1, Integer::sum) >= BLOCKED_LOOKS) {
                     cancelLeg(s); // its leg met a robot late or early: planned again from where it stands
                 }
@@ -208,7 +204,7 @@ final class TrafficControl {
         legSince.put(s.id(), System.nanoTime());
         CancelMissionCommand cancel = new CancelMissionCommand();
         cancel.deviceId = s.id();
-        cancel.missionType = "goto";
+        cancel.missionType = RobotState.GOTO;
         counts.cancelledLegs.incrementAndGet();
         commands.send(cancel, "its leg is blocked by another robot: planned again");
     }
@@ -246,7 +242,7 @@ final class TrafficControl {
         commands.send(go, "a leg of its reserved path to " + end);
     }
 
-    /** A line of figures for the log (the scenario's report reads the last one). Binding thread. */
+    /** A line of figures for the log (the scenario's report reads the last one). */
     String figures(long goTosSent) {
         long rounds = counts.rounds.get();
         return String.format(java.util.Locale.ROOT, "traffic: %d rounds, planning %.2f ms per round, %d go-tos sent,"

@@ -2,7 +2,14 @@ package eu.brain.iot.behaviours.robot.impl;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.util.List;
+import java.util.stream.Stream;
+
 import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.Grid;
+import eu.brain.iot.behaviours.warehouse.RobotState;
 
 /** How robots are released towards the doors: in waves, or continuously under the traffic planner. */
 class CartReleaseTest {
@@ -36,5 +43,37 @@ class CartReleaseTest {
         assertThat(CartRelease.waves(0).open(0, false, 1)).isTrue();
         assertThat(CartRelease.waves(0).open(1, false, 1)).isFalse();
         assertThat(CartRelease.continuous(0).open(0, true, 1)).isTrue();
+    }
+
+    @Test
+    void inWavesACarrierSetsOffOnceTheWavesOtherRobotsAreDownOrBehindACarrier() {
+        CartRelease waves = CartRelease.waves(4);
+        Errands.Errand goingDown = new Errands.Errand("robot2", Errands.Leg.TO_CART, "cart2", new Cell(5, 8), null,
+                new Cell(2, 1));
+        RobotState carrier = robot("robot1", new Cell(5, 5), Grid.CORRIDOR, RobotState.DETECTS_NOTHING, "cart1");
+        RobotState onTheWay = robot("robot2", new Cell(5, 3), Grid.CORRIDOR, RobotState.DETECTS_NOTHING, null);
+        RobotState down = robot("robot2", new Cell(5, 8), Grid.UNLOAD, RobotState.DETECTS_NOTHING, null);
+        RobotState behind = robot("robot2", new Cell(5, 4), Grid.CORRIDOR, RobotState.DETECTS_ROBOT, null);
+        List<RobotState> others = List.of(robot("robot3", new Cell(1, 1), Grid.DOCKING, 0, null),
+                robot("robot4", new Cell(2, 1), Grid.DOCKING, 0, null));
+
+        assertThat(waves.mayCarryBack("robot1", List.of(goingDown), with(carrier, onTheWay, others)))
+                .as("robot2 still comes down").isFalse();
+        assertThat(waves.mayCarryBack("robot1", List.of(goingDown), with(carrier, down, others))).isTrue();
+        assertThat(waves.mayCarryBack("robot1", List.of(goingDown), with(carrier, behind, others)))
+                .as("robot2 waits behind the carrier, which must move first").isTrue();
+        assertThat(waves.mayCarryBack("robot1", List.of(goingDown), List.of(carrier, onTheWay)))
+                .as("one group: the orchestrator resolves meetings at the door").isTrue();
+        assertThat(CartRelease.continuous(10).mayCarryBack("robot1", List.of(goingDown),
+                with(carrier, onTheWay, others))).as("the planner's reservations order the door").isTrue();
+    }
+
+    private static List<RobotState> with(RobotState a, RobotState b, List<RobotState> rest) {
+        return Stream.concat(Stream.of(a, b), rest.stream()).toList();
+    }
+
+    private static RobotState robot(String id, Cell cell, int area, int detect, String cart) {
+        return new RobotState(id, cell, "S", area, detect == RobotState.DETECTS_NOTHING, detect, cart, 1L,
+                RobotState.GOTO, "running", new Cell(5, 8), true);
     }
 }

@@ -144,46 +144,6 @@ class ErrandsTest {
         assertThat(errands.workLeft(floor, BAND)).as("cart2 back on the table").isTrue();
     }
 
-    /**
-     * The way in and out of the docking area keeps off other robots' docks: robot-sim's shortest path ran along the
-     * docking rows past parked robots (the generated warehouses dock robots on two rows).
-     */
-    @Test
-    void robotsEnterAndLeaveTheDockingAreaByTheirOwnColumnAndNeverThroughAnotherRobotsDock() {
-        Grid twoRows = Grid.parse(String.join("\n",
-                "########",
-                "#RdRdRd#",
-                "#Rddddd#",
-                "#......#",
-                "#ssssss#",
-                "########"));
-        Errands errands = new Errands(6);
-        errands.seen("robot1", new Cell(1, 1), true);
-        errands.seen("robot2", new Cell(3, 1), true);
-        errands.seen("robot3", new Cell(1, 2), true);
-
-        assertThat(errands.edgeOfDocking("robot2", new Cell(3, 1), twoRows, Set.of())).isEqualTo(new Cell(3, 3));
-        assertThat(errands.edgeOfDocking("robot3", new Cell(1, 2), twoRows, Set.of())).isEqualTo(new Cell(1, 3));
-        // robot1's own column holds robot3's dock: its way goes round it
-        assertThat(errands.edgeOfDocking("robot1", new Cell(1, 1), twoRows, Set.of())).isEqualTo(new Cell(2, 3));
-        // robot3 parked at (1,2) before its dock was learnt (the first look at the fleet) is kept off too
-        Errands first = new Errands(6);
-        first.seen("robot1", new Cell(1, 1), true);
-        assertThat(first.edgeOfDocking("robot1", new Cell(1, 1), twoRows, Set.of(new Cell(1, 2))))
-                .isEqualTo(new Cell(2, 3));
-        // a robot sent aside to a docking cell leaves from where it stands
-        assertThat(errands.edgeOfDocking("robot2", new Cell(6, 2), twoRows, Set.of())).isEqualTo(new Cell(6, 3));
-
-        // robot-sim's own shortest path from (1,1) to (2,3) may run through robot3's dock: the go-to is the first
-        // straight leg of a way round it, which robot-sim can only take as it is
-        assertThat(errands.straightToward("robot1", new Cell(1, 1), new Cell(2, 3), twoRows, Set.of()))
-                .isEqualTo(new Cell(2, 1));
-        assertThat(errands.straightToward("robot1", new Cell(2, 1), new Cell(2, 3), twoRows, Set.of()))
-                .isEqualTo(new Cell(2, 3));
-        assertThat(errands.straightToward("robot1", new Cell(2, 3), new Cell(1, 1), twoRows, Set.of()))
-                .isEqualTo(new Cell(2, 1));
-    }
-
     private static List<CartState> carriedBy(List<CartState> carts, int n, String robot) {
         List<CartState> now = new ArrayList<>(carts);
         now.set(n, new CartState("cart" + n, carts.get(n).cell(), robot));

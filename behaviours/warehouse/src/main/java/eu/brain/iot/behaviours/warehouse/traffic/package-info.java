@@ -4,11 +4,11 @@
  * does), over robot-sim's movement rules (one cell per step, four directions, a robot enters only a cell that was
  * empty at the start of the step). Plain Java, no OSGi, no threads of its own: the behaviour that owns a planner
  * calls it from one thread. One class per policy: {@link eu.brain.iot.behaviours.warehouse.traffic.FleetPlanner}
- * (who goes where when), {@link eu.brain.iot.behaviours.warehouse.traffic.DoorBatches} (which direction a door
- * serves), {@link eu.brain.iot.behaviours.warehouse.traffic.MapCheck} (maps the planner refuses).
+ * (who goes where when; its passage claims decide which way a door or a one-cell lane is driven through),
+ * {@link eu.brain.iot.behaviours.warehouse.traffic.MapCheck} (maps the planner refuses).
  */
 @Export
-@Version("1.0.0")
+@Version("2.0.0")
 package eu.brain.iot.behaviours.warehouse.traffic;
 
 import org.osgi.annotation.bundle.Export;
