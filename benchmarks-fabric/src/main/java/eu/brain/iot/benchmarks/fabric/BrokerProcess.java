@@ -12,7 +12,8 @@ import java.util.concurrent.TimeUnit;
 /**
  * A broker the benchmark starts in a process of its own on a free port of 127.0.0.1, with a fresh state folder:
  * the embedded broker ({@code broker/target/broker.jar}, file persistence, as {@code ./fabric-node --nodes} runs it)
- * or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED}). Stopped by {@link #close}.
+ * or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED}; Nagle's algorithm off). Stopped by
+ * {@link #close}.
  */
 final class BrokerProcess implements AutoCloseable {
     private static final long START_TIMEOUT_S = 60;
@@ -55,7 +56,8 @@ final class BrokerProcess implements AutoCloseable {
         int port = freePort();
         Path conf = work.resolve("mosquitto.conf");
         Files.writeString(conf, "listener " + port + " 127.0.0.1\nallow_anonymous true\npersistence false\n"
-                + "max_queued_messages " + MAX_QUEUED + "\n");
+                + "max_queued_messages " + MAX_QUEUED + "\n"
+                + "set_tcp_nodelay true\n"); // as federation/README.md asks: Nagle's algorithm holds small messages
         Process p = new ProcessBuilder(List.of(binary.toString(), "-c", conf.toString()))
                 .redirectErrorStream(true).redirectOutput(work.resolve("mosquitto.log").toFile()).start();
         return started("Mosquitto", p, port);
