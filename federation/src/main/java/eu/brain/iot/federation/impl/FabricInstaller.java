@@ -292,12 +292,15 @@ final class FabricInstaller implements BundleInstaller {
     }
 
     /**
-     * The bid's deadline: decided among the answers in, when one offers a candidate; with none offered yet while
-     * nodes are still to answer (a node slower than {@code install.bid.ms}, e.g. under load), they are waited for
-     * until {@link #NO_OFFER_WAIT} deadlines have passed: deciding then would give the event up for nothing.
+     * The bid's deadline: decided among the answers in, when one offers a candidate and, for an event that names
+     * devices, the offers in own every one of them; else, while nodes are still to answer (a node slower than
+     * {@code install.bid.ms}, e.g. under load), they are waited for until {@link #NO_OFFER_WAIT} deadlines have
+     * passed: deciding without them would give the event up for nothing, or put its behaviour away from its devices.
      */
     private void deadline(Bid bid) {
-        boolean offered = bid.offers.values().stream().anyMatch(Offer::offers);
+        Set<String> owned = new HashSet<>();
+        bid.offers.values().stream().filter(Offer::offers).forEach(o -> owned.addAll(o.owns()));
+        boolean offered = bid.offers.values().stream().anyMatch(Offer::offers) && owned.containsAll(bid.devices);
         if (offered || bid.waiting.isEmpty() || bid.extended) {
             decide(bid);
             return;

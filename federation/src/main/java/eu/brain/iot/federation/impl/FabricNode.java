@@ -40,6 +40,12 @@ public final class FabricNode implements AutoCloseable {
     static final int RESEND_CHECKS_PER_TIMEOUT = 4;
     /** Back-off before offering again events the bus refused (a full local queue). */
     static final long BUS_RETRY_MILLIS = 2;
+    /**
+     * How long the acknowledgements of events done wait to be sent together: each acknowledges every event of its
+     * publisher done so far, so one per few milliseconds is enough, where one per event doubled the messages through
+     * the broker and, whenever the broker was slow to confirm, held the inbound thread (and the events behind it).
+     */
+    static final long ACK_DELAY_MILLIS = 5;
     /** Back-off between first connection attempts. */
     static final long CONNECT_RETRY_MILLIS = 1000;
 
@@ -332,10 +338,13 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
-    /** Called by a delivery worker when events of a publisher are done: acknowledge soon, on the inbound thread. */
+    /**
+     * Called by a delivery worker when events of a publisher are done: acknowledged {@link #ACK_DELAY_MILLIS} later,
+     * with those done meanwhile, on the inbound thread.
+     */
     private void eventsDone() {
         if (ackPending.compareAndSet(false, true)) {
-            in.execute(this::flushAcks);
+            in.schedule(this::flushAcks, ACK_DELAY_MILLIS, TimeUnit.MILLISECONDS);
         }
     }
 
@@ -347,16 +356,16 @@ public final class FabricNode implements AutoCloseable {
         long now = System.currentTimeMillis();
         for (Inbox inbox : inboxes.values()) {
             try {
-                Wire.Ack ack = inbox.ackToSend(settings.node(), now);
-                if (ack != null) {
-                    link.publish(topics.acks(inbox.publisher(), settings.node()), wire.ack(ack), false);
+                if (!link.publishIfRoom(topics.acks(inbox.publisher(), settings.node()), () -> {
+                    Wire.Ack ack = inbox.ackToSend(settings.node(), now);
+                    return ack == null ? null : wire.ack(ack);
+                })) {
+                    eventsDone(); // the broker has not confirmed earlier publications: the inbound thread goes on
+                    return;
                 }
             } catch (IOException e) {
                 host.warn("Fabric {}: acknowledgement to {} not sent ({}); sent again later", settings.fabric(),
                         inbox.publisher(), e.getMessage());
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                return;
             }
         }
     }

@@ -11,6 +11,7 @@ import java.util.List;
 import java.util.concurrent.Semaphore;
 import java.util.concurrent.TimeUnit;
 import java.util.function.LongFunction;
+import java.util.function.Supplier;
 
 import javax.net.ssl.SSLContext;
 import javax.net.ssl.TrustManagerFactory;
@@ -39,7 +40,7 @@ import org.eclipse.paho.mqttv5.common.packet.UserProperty;
  * <p>
  * Threads: Paho's own threads call {@link Listener}; {@link #connect} is called by the fabric's inbound thread;
  * {@link #publish} by the fabric's sender and inbound threads, and waits while {@link #MAX_IN_FLIGHT} publications
- * are unconfirmed by the broker. {@link #client} and {@link #inFlight} are replaced at each connection.
+ * are unconfirmed by the broker; {@link #publishIfRoom} (the acknowledgements, on the inbound thread) never waits. {@link #client} and {@link #inFlight} are replaced at each connection.
  */
 final class MqttLink {
 
@@ -195,6 +196,11 @@ final class MqttLink {
         if (!slots.tryAcquire(settings.keepAliveSeconds(), TimeUnit.SECONDS)) {
             throw new IOException("the broker confirms no publication");
         }
+        send(slots, topic, payload, retained);
+    }
+
+    /** Publishes with a slot of {@code slots} held, released when the broker confirms (or the publication fails). */
+    private void send(Semaphore slots, String topic, byte[] payload, boolean retained) throws IOException {
         try {
             client.publish(topic, signed(topic, payload, retained), null, new MqttActionListener() {
                 @Override
@@ -211,6 +217,27 @@ final class MqttLink {
             slots.release();
             throw new IOException("publication on " + topic + " failed: " + e.getMessage(), e);
         }
+    }
+
+    /**
+     * Publish a signed message with QoS 1 if the broker has confirmed enough earlier ones, without waiting.
+     *
+     * @param payload made only when there is room; {@code null}: nothing to publish
+     * @return false when there was no room (nothing was made nor published)
+     * @throws IOException when the connection is down (the caller sends again after reconnection)
+     */
+    boolean publishIfRoom(String topic, Supplier<byte[]> payload) throws IOException {
+        Semaphore slots = inFlight;
+        if (!slots.tryAcquire()) {
+            return false;
+        }
+        byte[] bytes = payload.get();
+        if (bytes == null) {
+            slots.release();
+            return true;
+        }
+        send(slots, topic, bytes, false);
+        return true;
     }
 
     private MqttMessage signed(String topic, byte[] payload, boolean retained) {

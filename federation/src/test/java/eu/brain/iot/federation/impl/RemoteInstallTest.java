@@ -6,6 +6,7 @@ import static org.awaitility.Awaitility.await;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.ExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.LongStream;
@@ -146,6 +147,31 @@ class RemoteInstallTest extends FabricTestBase {
         assertThat(onA.got).isEmpty();
         assertThat(a.log).anyMatch(l -> l.contains("node b installs " + RECORDER + " for events of " + MOVED
                 + " naming [robot2] (owns [robot2], load 0"));
+    }
+
+    /**
+     * The node that owns the robot the event names answers later than {@code install.bid.ms} (its installer is
+     * slow): it is waited for, not passed over for the asking node, whose offer owns nothing.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void theNodeThatOwnsTheNamedRobotIsWaitedForWhenItAnswersLate(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode[] aRef = new TestNode[1];
+        TestNode[] bRef = new TestNode[1];
+        FakeInstaller atB = offering(bRef, new Recorder());
+        aRef[0] = node("a", offering(aRef, new Recorder()));
+        bRef[0] = node("b", atB);
+        ((FabricInstaller) bRef[0].fabric.installer()).ownedDevices("robot2"::equals);
+        awaitOnline(aRef[0], bRef[0]);
+        Deferred<List<BehaviourCandidate>> slow = new Deferred<>();
+        atB.findAnswer = slow.getPromise();
+        Promise<List<BehaviourCandidate>> found = aRef[0].fabric.installer().find(List.of(MOVED),
+                Map.of("robotId", "robot2"));
+        // b's installer answers 400 ms after the question, later than install.bid.ms (100 ms)
+        CompletableFuture.delayedExecutor(400, TimeUnit.MILLISECONDS)
+                .execute(() -> slow.resolve(List.of(FakeInstaller.candidate(RECORDER, MOVED))));
+        assertThat(found.timeout(10_000).getValue()).extracting(cand -> cand.node).containsOnly("b");
     }
 
     @ParameterizedTest
