@@ -64,6 +64,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  *          waits (a go-to cancelled, lost or never sent)
  * </pre>
  *
+ * The rows that bring a robot back onto its errand (taken over carrying a cart, a cart on the floor, no storage cell
+ * yet, idle before its goal or its dock) are the recovery step ({@link Recovery}), looked at before the normal moves.
  * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
  * ({@link RobotNames}): every port event names the robot's group, so the generated behaviour drives each robot by its
  * group's copy of Listing 4 (created by the group's first event, an {@code unloadLocation}: until then the binding
@@ -308,14 +310,11 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
-                if ((e.leg() == Errands.Leg.TO_STORAGE || e.leg() == Errands.Leg.TO_CART) && s.carrying()
-                        && !Boolean.TRUE.equals(data.get("carrying"))) {
-                    // taken over carrying a cart, or lifting it (the behaviour started again): the model goes through
-                    // CART, where liftCart finds the cart lifted already, to carry it on (Errands#adopt)
-                    fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
-                } else if (e.leg() == Errands.Leg.TO_STORAGE && fleet.cartPutDown(s, e) != null) {
-                    // its cart is on the floor: put down just before a take-over, or its pick failed
-                    fleet.resume(robot, "carrying nothing");
+                Errands.Errand errand = e;
+                Optional<Recovery.Step> fix = Recovery.inUnload(s, e, Boolean.TRUE.equals(data.get("carrying")),
+                        () -> fleet.cartPutDown(s, errand) != null, fleet::workLeft);
+                if (fix.isPresent()) {
+                    recover(in, area, fix.get());
                 } else if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle()
                         && !s.carrying()) {
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
@@ -325,12 +324,6 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
                     storageToDocking(in);
-                } else if (e.leg() == Errands.Leg.TO_STORAGE && e.drop() == null && s.idle()) {
-                    fleet.resume(robot, "looking for a free storage cell"); // carrying, no storage cell yet
-                } else if (s.idle() && (e.goal() != null ? !s.cell().equals(e.goal()) : fleet.workLeft())) {
-                    // idle before its goal (a go-to cancelled, lost or refused, or never sent: the extern
-                    // functions ran while the fleet service was being replaced): it goes on; never sent twice
-                    fleet.resume(robot, "idle before its goal");
                 } else if (moved.remove(robot)) {
                     unloadToUnload(in, area);
                 }
@@ -339,27 +332,34 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
-                if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
+                Optional<Recovery.Step> fix = Recovery.homeward(s, e);
+                if (fix.isPresent()) {
+                    recover(in, area, fix.get()); // where it enters the docking area (DockingWay), or a go-to lost
+                } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
                     fleet.docked(robot);
                     storageToDocking(in);
-                } else if (e.leg() == Errands.Leg.TO_DOCK && s.idle() && !s.carrying()) {
-                    // at the cell where it enters the docking area (RobotFleet#homeward), or its go-to was lost
-                    fleet.resume(robot, "idle before its dock");
                 }
             }
             case "DOCKING" -> {
                 // a robot done with its carts (the model stays in DOCKING) that was sent out of the way goes home
-                if (e.leg() == Errands.Leg.TO_DOCK && s.idle()) {
-                    if (s.cell().equals(e.dock())) {
-                        fleet.docked(robot);
-                    } else {
-                        fleet.resume(robot, "back to its dock");
-                    }
+                Optional<Recovery.Step> fix = Recovery.homeward(s, e);
+                if (fix.isPresent()) {
+                    recover(in, area, fix.get());
+                } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
+                    fleet.docked(robot);
                 }
             }
             default -> {
                 // OBSTACLE, DOOR, CART, ROBOT: the model's own transitions, the door or the orchestrator
             }
+        }
+    }
+
+    /** The recovery step's fix ({@link Recovery}), applied. */
+    private void recover(Instance in, double area, Recovery.Step step) {
+        switch (step.fix()) {
+            case THROUGH_CART -> fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
+            case GO_ON -> fleet.resume(in.robot(), step.why());
         }
     }
 
