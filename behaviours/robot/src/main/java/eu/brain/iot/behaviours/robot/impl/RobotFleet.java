@@ -370,8 +370,8 @@ public final class RobotFleet {
     /** A mission of the robot ended: a go-to to the goal last sent is no longer pending. */
     void missionEnded(String robot, String type, Integer goalX, Integer goalY) {
         SentGoal sent = sentGoal.get(robot);
-        if (RobotState.GOTO.equals(type) && sent != null && goalX != null && sent.goal().equals(new Cell(goalX, goalY == null
-                ? -1 : goalY))) {
+        if (RobotState.GOTO.equals(type) && sent != null && goalX != null
+                && sent.goal().equals(new Cell(goalX, goalY == null ? -1 : goalY))) {
             sentGoal.remove(robot);
         }
     }

@@ -21,7 +21,7 @@ final class SideSteps {
     /** Cells within which the robot let pass still counts as coming by. */
     static final int PASSING_CELLS = 2;
 
-    /** A robot stepping aside: to {@code cell}, for {@code passer} (or {@code null}: none seen), since {@code atNanos}. */
+    /** A robot stepping aside: to {@code cell}, for {@code passer} ({@code null}: none seen), since {@code atNanos}. */
     private record Aside(Cell cell, String passer, long atNanos) {
     }
 
