@@ -8,6 +8,7 @@ import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Future;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
@@ -166,16 +167,21 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             }
             return;
         }
-        thread.execute(() -> {
-            if (closed) {
-                return;
-            }
-            try {
-                input.handle(handler);
-            } catch (RuntimeException e) {
-                LOG.log(System.Logger.Level.WARNING, "robot binding: " + type.getSimpleName() + " not handled", e);
-            }
-        });
+        try {
+            thread.execute(() -> {
+                if (closed) {
+                    return;
+                }
+                try {
+                    input.handle(handler);
+                } catch (RuntimeException e) {
+                    LOG.log(System.Logger.Level.WARNING, "robot binding: " + type.getSimpleName() + " not handled",
+                            e);
+                }
+            });
+        } catch (RejectedExecutionException e) {
+            // the fleet is going away with this binding: nothing is driven any more
+        }
     }
 
     /**
