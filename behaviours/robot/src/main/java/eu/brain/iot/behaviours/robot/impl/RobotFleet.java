@@ -209,12 +209,17 @@ public final class RobotFleet {
      * from its dock starts {@code returning} (Robot.bip's initial transition).
      */
     double position(String robot) {
-        return view.robot(robot).map(s -> s.area() >= 1 && s.area() <= 3 ? s.area() : Grid.UNLOAD).orElse(1);
+        return view.robot(robot).map(s -> inModelArea(s.area()) ? s.area() : Grid.UNLOAD).orElse(Grid.DOCKING);
     }
 
     /** @return the area code of the robot's cell (docking 1, unload 2, storage 3), docking when unknown */
     double area(String robot) {
-        return view.robot(robot).map(s -> s.area()).filter(a -> a >= 1 && a <= 3).orElse(1);
+        return view.robot(robot).map(s -> s.area()).filter(RobotFleet::inModelArea).orElse(Grid.DOCKING);
+    }
+
+    /** @return whether the area code is one the robot model knows: docking, unload or storage */
+    private static boolean inModelArea(int area) {
+        return area == Grid.DOCKING || area == Grid.UNLOAD || area == Grid.STORAGE;
     }
 
     /**
