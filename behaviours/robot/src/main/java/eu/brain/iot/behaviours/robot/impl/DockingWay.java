@@ -31,16 +31,23 @@ final class DockingWay {
      * @param others other robots' docks and the cells where other robots stand parked in the docking area
      */
     static Cell next(Cell at, Cell goal, Cell dock, Grid grid, Set<Cell> others) {
-        boolean inDocking = grid.area(at) == Grid.DOCKING;
-        if (!inDocking && !goal.equals(dock)) {
+        if (!concerns(at, goal, dock, grid)) {
             return goal;
         }
-        if (!inDocking) {
+        if (grid.area(at) != Grid.DOCKING) {
             Cell edge = edgeOfDocking(dock, grid, others);
             return edge != null && !edge.equals(at) ? edge : straightToward(at, goal, grid, others);
         }
         Cell target = grid.area(goal) == Grid.DOCKING ? goal : edgeOfDocking(at, grid, others);
         return target == null ? goal : straightToward(at, target, grid, others);
+    }
+
+    /**
+     * @return whether the way from {@code at} to {@code goal} is this policy's: the robot stands in the docking area,
+     *         or goes to its dock; else robot-sim plans it, and {@link #next} gives the goal as it is
+     */
+    static boolean concerns(Cell at, Cell goal, Cell dock, Grid grid) {
+        return grid.area(at) == Grid.DOCKING || goal.equals(dock);
     }
 
     /**

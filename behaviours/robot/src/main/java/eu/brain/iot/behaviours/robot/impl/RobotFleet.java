@@ -271,14 +271,15 @@ public final class RobotFleet {
      * straight leg the binding finds the robot idle before its goal and sends it on. Any other goal is kept.
      */
     private Cell homeward(String robot, RobotState s, Cell goal, Grid grid) {
-        if (traffic != null) {
-            return goal;
+        Cell dock = errands.of(robot).dock();
+        if (traffic != null || !DockingWay.concerns(s.cell(), goal, dock, grid)) {
+            return goal; // the other robots are read only for a way in or out of the docking area
         }
         // the others parked in the docking area: at the start, before every robot was seen, their docks are unknown
         Set<Cell> parked = new HashSet<>();
         view.robots().stream().filter(o -> !o.id().equals(robot) && o.idle() && grid.area(o.cell()) == Grid.DOCKING)
                 .forEach(o -> parked.add(o.cell()));
-        return DockingWay.next(s.cell(), goal, errands.of(robot).dock(), grid, errands.otherDocks(robot, parked));
+        return DockingWay.next(s.cell(), goal, dock, grid, errands.otherDocks(robot, parked));
     }
 
     /**

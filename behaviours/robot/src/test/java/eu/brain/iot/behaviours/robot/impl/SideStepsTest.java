@@ -32,7 +32,7 @@ class SideStepsTest {
 
     @Test
     void aPasserThatStopsNearbyOrNoPasserAtAllIsNotWaitedFor() {
-        SideSteps noWait = new SideSteps(0);
+        SideSteps noWait = new SideSteps(-1); // any time aside is longer than that
         noWait.told("robot1", new Cell(3, 2), "robot2");
         put(robot("robot2", new Cell(3, 3), true));
         assertThat(noWait.holds(robot("robot1", new Cell(3, 2), false), view)).as("waited long enough").isFalse();
