@@ -231,7 +231,13 @@ final class MqttLink {
         if (!slots.tryAcquire()) {
             return false;
         }
-        byte[] bytes = payload.get();
+        byte[] bytes;
+        try {
+            bytes = payload.get();
+        } catch (RuntimeException e) {
+            slots.release();
+            throw e;
+        }
         if (bytes == null) {
             slots.release();
             return true;
