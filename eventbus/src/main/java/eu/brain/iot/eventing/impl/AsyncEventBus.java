@@ -182,7 +182,7 @@ final class AsyncEventBus implements EventBus {
         }
         typeCounters.published.increment();
         Envelope envelope = new Envelope(snapshot, typeCounters, reserved.length == 1, route.typeNames(),
-                done == null ? null : new Completion(reserved.length, done, log));
+                done == null ? null : new Completion(reserved.length, done, log), wait);
         boolean madeReady = false;
         for (ConsumerChannel target : reserved) {
             madeReady |= target.enqueue(envelope);
@@ -321,7 +321,7 @@ final class AsyncEventBus implements EventBus {
     /** Start delivering to a behaviour (see {@link #newTable}). */
     void addConsumer(ConsumerSpec spec) {
         ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log,
-                spec.forwarder() ? new Orphans(this, log) : null);
+                spec.forwarder() ? new Orphans(this, consumersLock, log) : null);
         Runnable after;
         synchronized (consumersLock) {
             after = newTable(channels.put(spec.serviceId(), channel));

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.concurrent.ConcurrentLinkedQueue;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Consumer;
 
 import org.osgi.service.log.Logger;
 
@@ -56,7 +55,7 @@ final class ConsumerChannel {
     }
 
     final ConsumerSpec spec;
-    private final Consumer<Envelope> orphans;
+    private final Orphans orphans;
     /** Changed in place by a reconfiguration of the bus; applies to the next reservations. */
     private volatile int capacity;
     private final DeliveryPool pool;
@@ -98,7 +97,7 @@ final class ConsumerChannel {
      * @param orphans for a forwarder: takes the events still queued when it goes away (they are published again, to
      *        whoever takes them now), instead of discarding them; {@code null} for a behaviour
      */
-    ConsumerChannel(ConsumerSpec spec, int capacity, DeliveryPool pool, Logger log, Consumer<Envelope> orphans) {
+    ConsumerChannel(ConsumerSpec spec, int capacity, DeliveryPool pool, Logger log, Orphans orphans) {
         this.orphans = orphans;
         this.spec = spec;
         this.capacity = capacity;
@@ -168,7 +167,7 @@ final class ConsumerChannel {
             if (!queued) {
                 // The forwarder left after this publisher routed: published again now, before its next event
                 // (outside the lock, which the bus takes under its own).
-                orphans.accept(envelope);
+                orphans.publishAgain(envelope, envelope.publisherWaits);
                 return false;
             }
         } else {
@@ -221,15 +220,17 @@ final class ConsumerChannel {
      * For a behaviour, just {@link #close()}: its queued events are discarded.
      */
     List<Envelope> closeAndTakeQueued() {
-        close();
         List<Envelope> taken = new ArrayList<>();
         if (orphans != null) {
             synchronized (forwarderLock) {
+                // closed and emptied in one step: whoever sees it closed finds nothing left to publish again
+                closed = true;
                 for (Envelope e = queue.poll(); e != null; e = queue.poll()) {
                     taken.add(e);
                 }
             }
         }
+        close();
         return taken;
     }
 
@@ -237,6 +238,13 @@ final class ConsumerChannel {
     private Envelope pollForwarder() {
         synchronized (forwarderLock) {
             return closed ? null : queue.poll();
+        }
+    }
+
+    /** What a closed forwarder still holds: only what {@link #closeAndTakeQueued} did not take (the bus closed). */
+    private Envelope pollClosedForwarder() {
+        synchronized (forwarderLock) {
+            return queue.poll();
         }
     }
 
@@ -304,9 +312,9 @@ final class ConsumerChannel {
     private void discardPending() {
         int count = 0;
         Envelope e;
-        while ((e = queue.poll()) != null) {
+        while ((e = orphans == null ? queue.poll() : pollClosedForwarder()) != null) {
             if (orphans != null) {
-                orphans.accept(e);
+                orphans.publishAgain(e, false);
                 continue;
             }
             e.counters.discarded.increment();

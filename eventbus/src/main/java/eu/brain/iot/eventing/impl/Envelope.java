@@ -16,18 +16,24 @@ final class Envelope {
     final List<String> typeNames;
     /** Told when each consumer is done with the envelope; {@code null} for local events. */
     final Completion completion;
+    /**
+     * Whether its publisher waits for room ({@code deliver}) rather than giving up at once ({@code tryDeliver}):
+     * how it is published again if it meets a forwarder that left (see {@link Orphans}).
+     */
+    final boolean publisherWaits;
 
     Envelope(Object payload, EventTypeCounters counters, boolean exclusive) {
-        this(payload, counters, exclusive, null, null);
+        this(payload, counters, exclusive, null, null, false);
     }
 
     Envelope(Object payload, EventTypeCounters counters, boolean exclusive, List<String> typeNames,
-            Completion completion) {
+            Completion completion, boolean publisherWaits) {
         this.payload = payload;
         this.counters = counters;
         this.exclusive = exclusive;
         this.typeNames = typeNames;
         this.completion = completion;
+        this.publisherWaits = publisherWaits;
     }
 
     /** One consumer is done with this envelope (called it, or discarded it). */

@@ -68,7 +68,7 @@ final class EventHold {
     static boolean enqueue(Held held, ConsumerChannel[] to) {
         List<String> names = held.remoteNames != null ? held.remoteNames
                 : held.type != null ? List.copyOf(RouteTable.typeNames(held.type)) : null;
-        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1, names, null);
+        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1, names, null, false);
         boolean madeReady = false;
         for (ConsumerChannel c : to) {
             c.forceReserve();

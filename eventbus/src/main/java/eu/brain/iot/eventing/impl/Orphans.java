@@ -3,29 +3,35 @@ package eu.brain.iot.eventing.impl;
 import java.util.ArrayList;
 import java.util.List;
 import java.util.Map;
-import java.util.function.Consumer;
 
 import org.osgi.service.log.Logger;
 
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.EventBusOverflowException;
 import eu.brain.iot.eventing.impl.EventHold.Held;
 
 /**
  * The events queued for a forwarder when it goes away (its node left the fabric, or no longer takes them). Those
  * queued when it leaves the route table keep their place ({@link #held}: the bus hands them over in the same step);
- * one a publisher routes to it just after, or one left when the bus closes, is published again here, never waiting,
- * to whoever takes it now (a local behaviour, another node, or the unhandled-event policy, which holds it for the
- * behaviour it installs). An event that finds every queue full is counted as discarded. Runs on the publisher's
- * thread or the one that retires the forwarder's queue; keeps no state.
+ * one a publisher routes to it just after is published again here, waiting for room as that publisher would, to
+ * whoever takes it now (a local behaviour, another node, or the unhandled-event policy, which holds it for the
+ * behaviour it installs), by the route table published without that forwarder; one left when the bus closes, never
+ * waiting. An event that finds no room is counted as discarded. Runs on the publisher's thread or the one that
+ * retires the forwarder's queue; keeps no state.
  */
-final class Orphans implements Consumer<Envelope> {
+final class Orphans {
 
     private final EventBus bus;
+    private final Object tableLock;
     private final Logger log;
 
-    Orphans(EventBus bus, Logger log) {
+    /**
+     * @param tableLock the lock under which the bus closes a forwarder and publishes the route table without it
+     */
+    Orphans(EventBus bus, Object tableLock, Logger log) {
         this.bus = bus;
+        this.tableLock = tableLock;
         this.log = log;
     }
 
@@ -47,11 +53,33 @@ final class Orphans implements Consumer<Envelope> {
                 : EventMaps.copyMap((Map<String, ?>) payload);
     }
 
-    @Override
+    /**
+     * Publish an event again, by the table without the forwarder that left.
+     *
+     * @param mayWait whether to wait for room as its publisher would ({@link Envelope#publisherWaits}), up to the
+     *        bus's overflow timeout; false on a delivery thread
+     */
     @SuppressWarnings("unchecked")
-    public void accept(Envelope e) {
-        boolean accepted = e.payload instanceof BrainIoTEvent event ? bus.tryDeliver(event)
-                : bus.tryDeliver(e.type(), (Map<String, Object>) e.payload);
+    void publishAgain(Envelope e, boolean mayWait) {
+        synchronized (tableLock) {
+            // Taking the lock waits for the table without the forwarder that left: published again by the table
+            // the publisher routed with, the event would find that forwarder closed and come back here, endlessly.
+        }
+        boolean accepted;
+        try {
+            if (!mayWait) {
+                accepted = e.payload instanceof BrainIoTEvent event ? bus.tryDeliver(event)
+                        : bus.tryDeliver(e.type(), (Map<String, Object>) e.payload);
+            } else if (e.payload instanceof BrainIoTEvent event) {
+                bus.deliver(event);
+                accepted = true;
+            } else {
+                bus.deliver(e.type(), (Map<String, Object>) e.payload);
+                accepted = true;
+            }
+        } catch (EventBusOverflowException full) {
+            accepted = false;
+        }
         if (!accepted) {
             e.counters.discarded.increment();
             log.warn("An event of type {} queued for a node that left the fabric found every queue full when it was "

@@ -141,6 +141,12 @@ public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
                 .orElseGet(EventTypeStatistics::new);
     }
 
+    /** How many events wait in the queue of a behaviour or forwarder (0 once it is gone). */
+    public int queueDepth(long id) {
+        return bus.consumers().stream().filter(c -> c.serviceId == id).mapToInt(c -> c.queueDepth).findFirst()
+                .orElse(0);
+    }
+
     public void close() {
         bus.close();
     }

@@ -6,10 +6,14 @@ import static org.awaitility.Awaitility.await;
 import java.time.Duration;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
+import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.CountDownLatch;
 import java.util.concurrent.TimeUnit;
+import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.AtomicInteger;
+import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Test;
@@ -175,6 +179,68 @@ class ForwardingTest {
         assertThat(forwarded.got).containsExactly(Moved.class.getName() + ":r1");
         assertThat(seen).as("the events queued for the forwarder that left come before those published after")
                 .containsExactly("r2", "r3", "r4", "r5", "r6", "r7", "r8");
+    }
+
+    @Test
+    void anEventRoutedToAForwarderAsItLeavesIsPublishedOnceInOrderToWhoeverTakesItNow() throws Exception {
+        int capacity = 2_048;
+        BusCore wide = new BusCore(capacity, 20_000, log.logger);
+        try {
+            wide.policy(new EventHoldTest.Policy()); // holds what nobody takes, as the BMS does for a node away
+            AtomicInteger attempted = new AtomicInteger();
+            AtomicInteger accepted = new AtomicInteger();
+            AtomicReference<Throwable> failed = new AtomicReference<>();
+            AtomicBoolean stop = new AtomicBoolean();
+            // a small stack, as a busy thread may have: publishing again must not recurse while the table changes
+            Thread publisher = new Thread(null, () -> {
+                try {
+                    while (!stop.get()) {
+                        wide.deliver(new Moved("r" + attempted.incrementAndGet()));
+                        accepted.incrementAndGet();
+                    }
+                } catch (Throwable t) {
+                    failed.set(t);
+                }
+            }, "publisher", 256 * 1024);
+            Set<String> seen = ConcurrentHashMap.newKeySet();
+            List<String> duplicates = new CopyOnWriteArrayList<>();
+            List<Integer> order = new CopyOnWriteArrayList<>();
+            EventForwarder recorder = (type, names, data) -> {
+                order.add(Integer.parseInt(((String) data.get("robotId")).substring(1)));
+                if (!seen.add((String) data.get("robotId"))) {
+                    duplicates.add((String) data.get("robotId"));
+                }
+            };
+            publisher.start();
+            for (int round = 1; round <= 5; round++) {
+                CountDownLatch leave = new CountDownLatch(1);
+                long id = wide.addForwarder((EventForwarder) (type, names, data) -> {
+                    recorder.forward(type, names, data);
+                    try {
+                        leave.await(20, TimeUnit.SECONDS); // its node takes no more: the queue fills
+                    } catch (InterruptedException e) {
+                        Thread.currentThread().interrupt();
+                    }
+                }, "B", null, Moved.class.getName());
+                // the publisher waits for room in the full queue of the forwarder that is about to leave
+                await().atMost(DEADLINE).until(() -> failed.get() != null
+                        || wide.queueDepth(id) >= capacity && attempted.get() == accepted.get() + 1);
+                assertThat(failed.get()).isNull();
+                wide.removeBehaviour(id);
+                leave.countDown();
+            }
+            stop.set(true);
+            wide.addForwarder(recorder, "B", null, Moved.class.getName());
+            publisher.join(DEADLINE.toMillis());
+
+            assertThat(failed.get()).as("the publisher's error").isNull();
+            await().atMost(DEADLINE).untilAsserted(() -> assertThat(seen).as("events forwarded, of %d accepted; bus: %s",
+                    accepted.get(), wide.statistics(Moved.class.getName())).hasSize(accepted.get()));
+            assertThat(duplicates).isEmpty();
+            assertThat(order).as("in the order published").isSorted();
+        } finally {
+            wide.close();
+        }
     }
 
     @Test
