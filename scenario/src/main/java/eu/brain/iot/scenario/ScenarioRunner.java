@@ -1,5 +1,6 @@
 package eu.brain.iot.scenario;
 
+import eu.brain.iot.behaviours.warehouse.CartBudget;
 import eu.brain.iot.robotsim.RobotSim;
 import eu.brain.iot.robotsim.SimConfig;
 import eu.brain.iot.robotsim.world.SimRules;
@@ -43,6 +44,7 @@ final class ScenarioRunner {
     int run() throws UsageException, IOException, InterruptedException {
         WarehouseMap map = Warehouses.of(options);
         checkFaultRobots(map);
+        checkCartBudget(map);
         checkTraffic(map);
         Files.createDirectories(options.runDir());
         long wall0 = System.nanoTime();
@@ -108,6 +110,25 @@ final class ScenarioRunner {
         if (why.isPresent()) {
             throw new UsageException("the traffic planner refuses the map '" + map.name() + "': " + why.get()
                     + " (--no-traffic runs it without the planner)");
+        }
+    }
+
+    /**
+     * A warehouse with more carts than its robots' behaviours may lift could never end: refused before anything
+     * starts (without behaviours nothing lifts a cart anyway).
+     */
+    private void checkCartBudget(WarehouseMap map) throws UsageException {
+        if (!options.behaviours()) {
+            return;
+        }
+        int robots = map.robots().size();
+        int carts = map.carts().size();
+        if (carts > CartBudget.cartsFor(robots)) {
+            throw new UsageException(String.format("the warehouse '%s' has %d carts, but its %d robots can move at most "
+                    + "%d: the robot model lets each robot lift %d (Robot.bip, data int cart = %d), then it stays "
+                    + "docked. Use at least %d robots or at most %d carts (--robots, --carts)", map.name(), carts,
+                    robots, CartBudget.cartsFor(robots), CartBudget.PER_ROBOT, CartBudget.PER_ROBOT,
+                    CartBudget.robotsFor(carts), CartBudget.cartsFor(robots)));
         }
     }
 

@@ -73,6 +73,19 @@ class ScenarioProcessTest {
      * itself when every cart is in storage and robot3 is back, with exit 0 and the figures in the report.
      */
     @Test
+    void aWarehouseWithMoreCartsThanItsRobotsMayLiftIsRefusedBeforeAnythingStarts(@TempDir Path run) {
+        ByteArrayOutputStream out = new ByteArrayOutputStream();
+        ByteArrayOutputStream err = new ByteArrayOutputStream();
+        int code = Main.run(new String[] {"--root", ROOT.toString(), "--generate", "--width", "60", "--height", "30",
+                "--robots", "10", "--carts", "31", "--run-dir", run.toString()},
+                new PrintStream(out, true, StandardCharsets.UTF_8), new PrintStream(err, true, StandardCharsets.UTF_8));
+        assertThat(code).isEqualTo(2);
+        assertThat(err.toString(StandardCharsets.UTF_8)).contains("has 31 carts, but its 10 robots can move at most 30")
+                .contains("Use at least 11 robots or at most 30 carts");
+        assertThat(out.toString(StandardCharsets.UTF_8)).as("nothing started").doesNotContain("robot-sim:");
+    }
+
+    @Test
     void aRunDrivenThroughTheEdgeEndsByItselfAndPasses(@TempDir Path run) throws Exception {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(out, true, StandardCharsets.UTF_8);
