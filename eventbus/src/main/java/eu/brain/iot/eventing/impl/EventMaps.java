@@ -1,9 +1,13 @@
 package eu.brain.iot.eventing.impl;
 
+import java.lang.invoke.MethodHandle;
 import java.lang.invoke.MethodHandles;
+import java.lang.invoke.MethodType;
 import java.lang.invoke.VarHandle;
 import java.lang.reflect.Array;
 import java.lang.reflect.Field;
+import java.lang.reflect.Modifier;
+import java.lang.reflect.Type;
 import java.util.ArrayList;
 import java.util.Collection;
 import java.util.LinkedHashMap;
@@ -19,9 +23,12 @@ import org.osgi.util.converter.Converters;
  * for a typed behaviour that consumes an event published untyped, or published with another bundle's copy of
  * the class.
  * <p>
- * Reading an object's fields uses var handles fixed once per class. Building a typed object from a map uses the
- * OSGi Converter (its DTO rules: public fields, public no-argument constructor), which converts every field to its
- * declared type, nested data objects and collections included.
+ * Reading an object's fields uses var handles fixed once per class. Building a typed object from a map follows the
+ * OSGi Converter's DTO rules (public fields, public no-argument constructor) with a plan fixed once per class
+ * ({@link Writer}): a value that already has its field's type and is immutable is set as it is, a map for a nested
+ * data object is built the same way, and only the other values go through the Converter, one field at a time. The
+ * Converter on a whole object looks up the class's methods by reflection for every field of every event, which made
+ * it the largest cost of taking an event from another node.
  */
 final class EventMaps {
 
@@ -31,6 +38,13 @@ final class EventMaps {
         @Override
         protected Reader computeValue(Class<?> type) {
             return Reader.build(type);
+        }
+    };
+
+    private static final ClassValue<Writer> WRITERS = new ClassValue<>() {
+        @Override
+        protected Writer computeValue(Class<?> type) {
+            return Writer.build(type);
         }
     };
 
@@ -44,7 +58,11 @@ final class EventMaps {
 
     /** @return a new object of the target class built from a map of field values */
     static <T> T fromMap(Map<String, ?> fields, Class<T> target) {
-        return CONVERTER.convert(fields).targetAsDTO().to(target);
+        Writer writer = WRITERS.get(target);
+        if (writer.constructor == null) {
+            return CONVERTER.convert(fields).targetAsDTO().to(target);
+        }
+        return target.cast(writer.write(fields));
     }
 
     /** @return a new object of the target class with the source's field values, matched by name */
@@ -122,4 +140,99 @@ final class EventMaps {
         }
     }
 
+    /**
+     * Builds one data class from a map of field values; {@link #constructor} is null for a class outside the DTO
+     * rules (no public no-argument constructor, abstract, or a key prefix), which the Converter builds as a whole.
+     */
+    private static final class Writer {
+        final MethodHandle constructor;
+        final String[] names;
+        final VarHandle[] handles;
+        final Class<?>[] types;
+        final Type[] genericTypes;
+
+        private Writer(MethodHandle constructor, List<Field> fields, VarHandle[] handles) {
+            this.constructor = constructor;
+            this.names = fields.stream().map(Field::getName).toArray(String[]::new);
+            this.handles = handles;
+            this.types = fields.stream().map(f -> boxed(f.getType())).toArray(Class<?>[]::new);
+            this.genericTypes = fields.stream().map(Field::getGenericType).toArray(Type[]::new);
+        }
+
+        static Writer build(Class<?> type) {
+            Writer none = new Writer(null, List.of(), new VarHandle[0]);
+            int m = type.getModifiers();
+            if (!Modifier.isPublic(m) || Modifier.isAbstract(m) || type.isInterface() || type.isArray()
+                    || type.isPrimitive() || EventCopier.isImmutable(type) || Map.class.isAssignableFrom(type)
+                    || Collection.class.isAssignableFrom(type) || hasKeyPrefix(type)) {
+                return none;
+            }
+            List<Field> fields = DataFields.of(type);
+            try {
+                MethodHandles.Lookup lookup = MethodHandles.privateLookupIn(type, MethodHandles.lookup());
+                MethodHandle constructor = lookup.findConstructor(type, MethodType.methodType(void.class));
+                if (!Modifier.isPublic(type.getConstructor().getModifiers())) {
+                    return none;
+                }
+                VarHandle[] handles = new VarHandle[fields.size()];
+                for (int i = 0; i < handles.length; i++) {
+                    handles[i] = lookup.unreflectVarHandle(fields.get(i));
+                }
+                return new Writer(constructor, fields, handles);
+            } catch (ReflectiveOperationException | SecurityException e) {
+                return none;
+            }
+        }
+
+        /** The Converter's DTO rule for a class with a {@code PREFIX_} constant: its keys carry that prefix. */
+        private static boolean hasKeyPrefix(Class<?> type) {
+            try {
+                type.getField("PREFIX_");
+                return true;
+            } catch (NoSuchFieldException e) {
+                return false;
+            }
+        }
+
+        Object write(Map<String, ?> fields) {
+            Object target;
+            try {
+                target = constructor.invoke();
+            } catch (RuntimeException | Error e) {
+                throw e;
+            } catch (Throwable e) {
+                throw new IllegalStateException("cannot make a " + constructor.type().returnType().getName(), e);
+            }
+            for (int i = 0; i < names.length; i++) {
+                Object value = fields.get(names[i]);
+                if (value != null || fields.containsKey(names[i])) {
+                    handles[i].set(target, value(value, i));
+                }
+            }
+            return target;
+        }
+
+        private Object value(Object value, int i) {
+            Class<?> type = types[i];
+            if (value == null) {
+                return genericTypes[i] instanceof Class<?> c && c.isPrimitive() ? CONVERTER.convert(null).to(c) : null;
+            }
+            if (type.isInstance(value) && EventCopier.isImmutable(value.getClass())) {
+                return value;
+            }
+            if (value instanceof Map<?, ?> map && genericTypes[i] instanceof Class<?> c) {
+                Writer nested = WRITERS.get(c);
+                if (nested.constructor != null) {
+                    @SuppressWarnings("unchecked")
+                    Map<String, ?> nestedFields = (Map<String, ?>) map;
+                    return nested.write(nestedFields);
+                }
+            }
+            return CONVERTER.convert(value).to(genericTypes[i]);
+        }
+
+        private static Class<?> boxed(Class<?> type) {
+            return type.isPrimitive() ? MethodType.methodType(type).wrap().returnType() : type;
+        }
+    }
 }

@@ -90,6 +90,68 @@ class EventMapsTest {
         assertThat(r.detours).isNull();
     }
 
+    public static class Scalars extends BrainIoTEvent {
+        public int count;
+        public long big;
+        public double ratio;
+        public float small;
+        public boolean flag;
+        public Integer boxed;
+        public String text;
+        public Thread.State state;
+        public Object anything;
+        public Point where;
+        public List<Point> path;
+    }
+
+    @Test
+    void aMapBecomesAnEventAsTheOsgiConverterBuildsIt() {
+        List<Map<String, Object>> inputs = new ArrayList<>();
+        Map<String, Object> exact = new LinkedHashMap<>();
+        exact.put("count", 3);
+        exact.put("big", 4L);
+        exact.put("ratio", 0.5);
+        exact.put("small", 1.5f);
+        exact.put("flag", true);
+        exact.put("boxed", 7);
+        exact.put("text", "t");
+        exact.put("state", Thread.State.RUNNABLE);
+        exact.put("anything", "x");
+        exact.put("timestamp", Instant.parse("2026-11-23T00:00:00Z"));
+        exact.put("sourceNode", "nodeA");
+        exact.put("where", Map.of("x", 1, "y", 2));
+        exact.put("path", List.of(Map.of("x", 3, "y", 4)));
+        inputs.add(exact);
+        // as JSON from another node gives them: other number types, enums and instants as text
+        Map<String, Object> json = new LinkedHashMap<>();
+        json.put("count", 3L);
+        json.put("big", 4);
+        json.put("ratio", 1);
+        json.put("small", 2.25);
+        json.put("flag", "true");
+        json.put("boxed", 8L);
+        json.put("text", 12);
+        json.put("state", "BLOCKED");
+        json.put("anything", List.of(1, 2));
+        json.put("timestamp", "2026-11-23T00:00:00Z");
+        json.put("where", Map.of("x", 5L, "y", "6"));
+        json.put("unknown", "ignored");
+        inputs.add(json);
+        Map<String, Object> nulls = new LinkedHashMap<>();
+        nulls.put("text", null);
+        nulls.put("count", null);
+        nulls.put("flag", null);
+        nulls.put("boxed", null);
+        nulls.put("where", null);
+        inputs.add(nulls);
+        for (Map<String, Object> input : inputs) {
+            Scalars ours = EventMaps.fromMap(input, Scalars.class);
+            Scalars theirs = org.osgi.util.converter.Converters.standardConverter().convert(input).targetAsDTO()
+                    .to(Scalars.class);
+            assertThat(EventMaps.toMap(ours)).as("from %s", input).isEqualTo(EventMaps.toMap(theirs));
+        }
+    }
+
     @Test
     void anEventIsConvertedToAnotherClassWithTheSameFieldNames() {
         OtherRoute other = EventMaps.convert(route(), OtherRoute.class);
