@@ -126,7 +126,8 @@ final class ScenarioRunner {
         if (carts > CartBudget.cartsFor(robots)) {
             throw new UsageException(String.format("the warehouse '%s' has %d carts, but its %d robots can move at most "
                     + "%d: the robot model lets each robot lift %d (Robot.bip, data int cart = %d), then it stays "
-                    + "docked. Use at least %d robots or at most %d carts (--robots, --carts)", map.name(), carts,
+                    + "docked. Use at least %d robots or at most %d carts (--robots and --carts, or a map with fewer carts)",
+                    map.name(), carts,
                     robots, CartBudget.cartsFor(robots), CartBudget.PER_ROBOT, CartBudget.PER_ROBOT,
                     CartBudget.robotsFor(carts), CartBudget.cartsFor(robots)));
         }

@@ -67,11 +67,6 @@ class ScenarioProcessTest {
         assertThat(listening(simPort)).as("robot-sim is closed").isFalse();
     }
 
-    /**
-     * The success path, with the test in the behaviours' place: once the run has started, the test sends robot3's
-     * errands through the node's edge (its REST API's ACT endpoints, which command robot-sim), and the run ends by
-     * itself when every cart is in storage and robot3 is back, with exit 0 and the figures in the report.
-     */
     @Test
     void aWarehouseWithMoreCartsThanItsRobotsMayLiftIsRefusedBeforeAnythingStarts(@TempDir Path run) {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
@@ -85,6 +80,11 @@ class ScenarioProcessTest {
         assertThat(out.toString(StandardCharsets.UTF_8)).as("nothing started").doesNotContain("robot-sim:");
     }
 
+    /**
+     * The success path, with the test in the behaviours' place: once the run has started, the test sends robot3's
+     * errands through the node's edge (its REST API's ACT endpoints, which command robot-sim), and the run ends by
+     * itself when every cart is in storage and robot3 is back, with exit 0 and the figures in the report.
+     */
     @Test
     void aRunDrivenThroughTheEdgeEndsByItselfAndPasses(@TempDir Path run) throws Exception {
         ByteArrayOutputStream out = new ByteArrayOutputStream();

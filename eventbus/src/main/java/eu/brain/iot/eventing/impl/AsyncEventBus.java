@@ -157,7 +157,7 @@ final class AsyncEventBus implements EventBus {
      * The route of an event in a table; {@code type} is null for an untyped event, {@code remoteNames} null for
      * a local one.
      */
-    private Route routeOf(RouteTable table, Class<?> type, String eventType, List<String> remoteNames) {
+    Route routeOf(RouteTable table, Class<?> type, String eventType, List<String> remoteNames) {
         if (remoteNames != null) {
             return table.routeForRemote(eventType, remoteNames, this::countersFor);
         }
@@ -165,7 +165,8 @@ final class AsyncEventBus implements EventBus {
     }
 
     private ConsumerChannel[] targetsIn(RouteTable table, Held held) {
-        return routeOf(table, held.type(), held.counters().eventType, held.remoteNames()).targets(held.snapshot());
+        return EventHold.without(routeOf(table, held.type(), held.counters().eventType, held.remoteNames())
+                .targets(held.snapshot()), held.reached());
     }
 
     /**
@@ -173,7 +174,7 @@ final class AsyncEventBus implements EventBus {
      *
      * @return false when a queue was full and {@code wait} is false (nothing queued then)
      */
-    private boolean send(ConsumerChannel[] targets, Route route, Object snapshot, boolean wait, Runnable done) {
+    boolean send(ConsumerChannel[] targets, Route route, Object snapshot, boolean wait, Runnable done) {
         EventTypeCounters typeCounters = route.counters();
         ConsumerChannel[] reserved = Reservations.reserveAll(targets, typeCounters, wait, overflowTimeoutNanos,
                 queueCapacity);
@@ -182,7 +183,7 @@ final class AsyncEventBus implements EventBus {
         }
         typeCounters.published.increment();
         Envelope envelope = new Envelope(snapshot, typeCounters, reserved.length == 1, route.typeNames(),
-                done == null ? null : new Completion(reserved.length, done, log), wait);
+                done == null ? null : new Completion(reserved.length, done, log), wait, reserved);
         boolean madeReady = false;
         for (ConsumerChannel target : reserved) {
             madeReady |= target.enqueue(envelope);
@@ -212,7 +213,7 @@ final class AsyncEventBus implements EventBus {
                 decided = asker.ask(current, route, snapshot);
             }
             if (decided == Disposition.UNHANDLED) {
-                countUnhandled(route.counters(), "the unhandled-event policy " + current.getClass().getName()
+                route.counters().countUnhandled(log, "the unhandled-event policy " + current.getClass().getName()
                         + " gives them up");
                 Completion.run(done, log);
                 return true;
@@ -223,7 +224,7 @@ final class AsyncEventBus implements EventBus {
             if (deadline == 0) {
                 deadline = System.nanoTime() + overflowTimeoutNanos;
             }
-            Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis(), remoteNames);
+            Held held = new Held(snapshot, type, route.counters(), System.currentTimeMillis(), remoteNames, null);
             HoldOutcome outcome = hold(table, current, held, wait ? deadline : 0);
             if (outcome == HoldOutcome.HELD) {
                 Completion.run(done, log);
@@ -290,22 +291,9 @@ final class AsyncEventBus implements EventBus {
         if (table.lastResort.length > 0) {
             return send(table.lastResort, route, snapshot, wait, done);
         }
-        countUnhandled(route.counters(), "no consumer of last resort is installed");
+        route.counters().countUnhandled(log, "no consumer of last resort is installed");
         Completion.run(done, log);
         return true;
-    }
-
-    private void countUnhandled(EventTypeCounters typeCounters, String why) {
-        typeCounters.published.increment();
-        typeCounters.unhandled.increment();
-        logUnhandled(typeCounters, why);
-    }
-
-    private void logUnhandled(EventTypeCounters typeCounters, String why) {
-        if (typeCounters.unhandledLogged.compareAndSet(false, true)) {
-            log.warn("No smart behaviour consumes events of type {} and {}; such events are counted as "
-                    + "'unhandled' (Gogo: bus:stats).", typeCounters.eventType, why);
-        }
     }
 
     private EventTypeCounters countersFor(String eventType) {
@@ -318,10 +306,17 @@ final class AsyncEventBus implements EventBus {
         }
     }
 
+    /** The route table, once a change under way is published (a forwarder is closed and left out under the lock). */
+    RouteTable settledRoutes() {
+        synchronized (consumersLock) {
+            return routes;
+        }
+    }
+
     /** Start delivering to a behaviour (see {@link #newTable}). */
     void addConsumer(ConsumerSpec spec) {
         ConsumerChannel channel = new ConsumerChannel(spec, queueCapacity, pool, log,
-                spec.forwarder() ? new Orphans(this, consumersLock, log) : null);
+                spec.forwarder() ? new Orphans(this, log) : null);
         Runnable after;
         synchronized (consumersLock) {
             after = newTable(channels.put(spec.serviceId(), channel));
@@ -383,7 +378,8 @@ final class AsyncEventBus implements EventBus {
             RouteTable table = routes;
             madeReady = EventHold.dispatch(released, held -> targetsIn(table, held), table.lastResort,
                     held -> decided.get(held.counters().eventType) != Disposition.UNHANDLED,
-                    counters -> logUnhandled(counters, "nothing takes them since the node they were queued for left"));
+                    counters -> counters.logUnhandled(log,
+                            "nothing takes them since the node they were queued for left"));
             consumersLock.notifyAll();
         }
         if (madeReady) {
@@ -412,7 +408,8 @@ final class AsyncEventBus implements EventBus {
             policy = null;
             RouteTable table = routes;
             madeReady = EventHold.dispatch(hold.removeAll(), held -> targetsIn(table, held), table.lastResort,
-                    held -> true, counters -> logUnhandled(counters, "the unhandled-event policy that held them went away"));
+                    held -> true,
+                    counters -> counters.logUnhandled(log, "the unhandled-event policy that held them went away"));
             consumersLock.notifyAll();
         }
         if (madeReady) {
@@ -466,6 +463,7 @@ final class AsyncEventBus implements EventBus {
             channels.values().forEach(ConsumerChannel::close);
             channels.clear();
             routes = new RouteTable(List.of());
+            policy = null; // what a closing forwarder leaves is then counted unhandled, not held after the hold went
             held = hold.removeAll();
             consumersLock.notifyAll();
         }

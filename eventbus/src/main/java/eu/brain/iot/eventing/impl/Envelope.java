@@ -21,19 +21,22 @@ final class Envelope {
      * how it is published again if it meets a forwarder that left (see {@link Orphans}).
      */
     final boolean publisherWaits;
+    /** The consumers it was queued for: one that leaves without taking it hands it to none of the others. */
+    final ConsumerChannel[] reached;
 
     Envelope(Object payload, EventTypeCounters counters, boolean exclusive) {
-        this(payload, counters, exclusive, null, null, false);
+        this(payload, counters, exclusive, null, null, false, new ConsumerChannel[0]);
     }
 
     Envelope(Object payload, EventTypeCounters counters, boolean exclusive, List<String> typeNames,
-            Completion completion, boolean publisherWaits) {
+            Completion completion, boolean publisherWaits, ConsumerChannel[] reached) {
         this.payload = payload;
         this.counters = counters;
         this.exclusive = exclusive;
         this.typeNames = typeNames;
         this.completion = completion;
         this.publisherWaits = publisherWaits;
+        this.reached = reached;
     }
 
     /** One consumer is done with this envelope (called it, or discarded it). */

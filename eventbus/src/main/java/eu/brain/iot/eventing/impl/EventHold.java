@@ -2,6 +2,7 @@ package eu.brain.iot.eventing.impl;
 
 import java.util.ArrayDeque;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collections;
 import java.util.IdentityHashMap;
 import java.util.Iterator;
@@ -28,9 +29,25 @@ final class EventHold {
     /**
      * One held event: the bus's snapshot (an event object, or a map for an untyped event), its class ({@code null}
      * when untyped: then it is routed by {@code counters.eventType}), when it was held, and for an event from
-     * another node the type names it is routed by (to local behaviours only), else {@code null}.
+     * another node the type names it is routed by (to local behaviours only), else {@code null}; for an event a
+     * forwarder left behind, the consumers it reached already (it goes to none of them again), else {@code null}.
      */
-    record Held(Object snapshot, Class<?> type, EventTypeCounters counters, long since, List<String> remoteNames) {
+    record Held(Object snapshot, Class<?> type, EventTypeCounters counters, long since, List<String> remoteNames,
+            ConsumerChannel[] reached) {
+    }
+
+    /** @return {@code targets} without those in {@code reached} (by identity); {@code targets} itself if none */
+    static ConsumerChannel[] without(ConsumerChannel[] targets, ConsumerChannel[] reached) {
+        if (reached == null || reached.length == 0 || targets.length == 0) {
+            return targets;
+        }
+        List<ConsumerChannel> left = new ArrayList<>(targets.length);
+        for (ConsumerChannel t : targets) {
+            if (!Arrays.asList(reached).contains(t)) {
+                left.add(t);
+            }
+        }
+        return left.size() == targets.length ? targets : left.toArray(new ConsumerChannel[0]);
     }
 
     private final ArrayDeque<Held> queue = new ArrayDeque<>();
@@ -68,7 +85,7 @@ final class EventHold {
     static boolean enqueue(Held held, ConsumerChannel[] to) {
         List<String> names = held.remoteNames != null ? held.remoteNames
                 : held.type != null ? List.copyOf(RouteTable.typeNames(held.type)) : null;
-        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1, names, null, false);
+        Envelope envelope = new Envelope(held.snapshot, held.counters, to.length == 1, names, null, false, to);
         boolean madeReady = false;
         for (ConsumerChannel c : to) {
             c.forceReserve();

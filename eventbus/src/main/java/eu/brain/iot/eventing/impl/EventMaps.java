@@ -7,8 +7,13 @@ import java.lang.invoke.VarHandle;
 import java.lang.reflect.Array;
 import java.lang.reflect.Field;
 import java.lang.reflect.Modifier;
+import java.lang.reflect.GenericArrayType;
+import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.Type;
+import java.lang.reflect.TypeVariable;
+import java.lang.reflect.WildcardType;
 import java.util.ArrayList;
+import java.util.Arrays;
 import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.List;
@@ -168,6 +173,9 @@ final class EventMaps {
                 return none;
             }
             List<Field> fields = DataFields.of(type);
+            if (fields.stream().anyMatch(f -> hasTypeVariable(f.getGenericType()))) {
+                return none; // a field of a type parameter: the Converter resolves it against the class
+            }
             try {
                 MethodHandles.Lookup lookup = MethodHandles.privateLookupIn(type, MethodHandles.lookup());
                 MethodHandle constructor = lookup.findConstructor(type, MethodType.methodType(void.class));
@@ -182,6 +190,19 @@ final class EventMaps {
             } catch (ReflectiveOperationException | SecurityException e) {
                 return none;
             }
+        }
+
+        private static boolean hasTypeVariable(Type type) {
+            if (type instanceof TypeVariable<?>) {
+                return true;
+            }
+            if (type instanceof ParameterizedType p) {
+                return Arrays.stream(p.getActualTypeArguments()).anyMatch(Writer::hasTypeVariable);
+            }
+            if (type instanceof GenericArrayType a) {
+                return hasTypeVariable(a.getGenericComponentType());
+            }
+            return type instanceof WildcardType;
         }
 
         /** The Converter's DTO rule for a class with a {@code PREFIX_} constant: its keys carry that prefix. */
@@ -228,7 +249,9 @@ final class EventMaps {
                     return nested.write(nestedFields);
                 }
             }
-            return CONVERTER.convert(value).to(genericTypes[i]);
+            Object converted = CONVERTER.convert(value).to(genericTypes[i]);
+            // the Converter hands a value for an Object field over as it is: the map is shared with other consumers
+            return converted == value ? toValue(value) : converted;
         }
 
         private static Class<?> boxed(Class<?> type) {

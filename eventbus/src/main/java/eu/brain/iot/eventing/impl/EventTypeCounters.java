@@ -3,6 +3,8 @@ package eu.brain.iot.eventing.impl;
 import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.concurrent.atomic.LongAdder;
 
+import org.osgi.service.log.Logger;
+
 import eu.brain.iot.eventing.monitoring.api.EventTypeStatistics;
 
 /** Counters of one event type; updated by publishers and delivery threads at once, hence adders. */
@@ -20,6 +22,21 @@ final class EventTypeCounters {
 
     EventTypeCounters(String eventType) {
         this.eventType = eventType;
+    }
+
+    /** One event of this type published that nothing takes: counted, and logged the first time. */
+    void countUnhandled(Logger log, String why) {
+        published.increment();
+        unhandled.increment();
+        logUnhandled(log, why);
+    }
+
+    /** Logs, the first time only, that events of this type are counted as unhandled, and why. */
+    void logUnhandled(Logger log, String why) {
+        if (unhandledLogged.compareAndSet(false, true)) {
+            log.warn("No smart behaviour consumes events of type {} and {}; such events are counted as "
+                    + "'unhandled' (Gogo: bus:stats).", eventType, why);
+        }
     }
 
     EventTypeStatistics snapshot() {

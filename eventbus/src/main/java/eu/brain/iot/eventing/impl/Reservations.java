@@ -30,7 +30,7 @@ final class Reservations {
             ConsumerChannel target = targets[i];
             while (!target.tryReserve()) {
                 if (target.isClosed()) {
-                    break; // it is leaving; the envelope will be counted as discarded
+                    break; // it is leaving: a behaviour's envelope is discarded, a forwarder's published again (Orphans)
                 }
                 long now = System.nanoTime();
                 if (target.stalledWhenFull(now, overflowTimeoutNanos)) {

@@ -152,6 +152,39 @@ class EventMapsTest {
         }
     }
 
+    public static class Holder<T> extends BrainIoTEvent {
+        public T value;
+        public List<T> values;
+    }
+
+    public static class PointHolder extends Holder<Point> {
+    }
+
+    public static class Loose extends BrainIoTEvent {
+        public Object anything;
+    }
+
+    @Test
+    void fieldsOfATypeParameterAreBuiltAsTheClassBindsIt() {
+        Map<String, Object> fields = new LinkedHashMap<>();
+        fields.put("value", Map.of("x", 1, "y", 2));
+        fields.put("values", List.of(Map.of("x", 3, "y", 4)));
+        PointHolder h = EventMaps.fromMap(fields, PointHolder.class);
+        assertThat(h.value.y).isEqualTo(2);
+        assertThat(h.values).hasSize(1);
+        assertThat(h.values.get(0).x).isEqualTo(3);
+    }
+
+    @Test
+    void aValueForAnObjectFieldIsCopiedNotSharedWithTheMap() {
+        List<Object> shared = new ArrayList<>(List.of(new ArrayList<>(List.of(1))));
+        Map<String, Object> fields = new LinkedHashMap<>();
+        fields.put("anything", shared);
+        Loose h = EventMaps.fromMap(fields, Loose.class);
+        assertThat(h.anything).isEqualTo(shared).isNotSameAs(shared);
+        assertThat(((List<?>) h.anything).get(0)).isNotSameAs(shared.get(0));
+    }
+
     @Test
     void anEventIsConvertedToAnotherClassWithTheSameFieldNames() {
         OtherRoute other = EventMaps.convert(route(), OtherRoute.class);

@@ -244,6 +244,42 @@ class ForwardingTest {
     }
 
     @Test
+    void aForwarderThatLeavesHandsItsEventsToNoConsumerThatHadThemAlready() throws Exception {
+        EventHoldTest.Policy policy = new EventHoldTest.Policy();
+        bus.policy(policy);
+        List<String> local = new CopyOnWriteArrayList<>();
+        bus.addUntypedBehaviour((UntypedSmartBehaviour) (type, fields) -> local.add((String) fields.get("robotId")),
+                null, Moved.class.getName());
+        CountDownLatch inside = new CountDownLatch(1);
+        CountDownLatch leave = new CountDownLatch(1);
+        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
+            inside.countDown();
+            try {
+                leave.await(20, TimeUnit.SECONDS); // its node takes no more
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        }, "B", null, Moved.class.getName());
+        for (int i = 1; i <= 5; i++) {
+            bus.deliver(new Moved("r" + i));
+        }
+        assertThat(inside.await(20, TimeUnit.SECONDS)).isTrue();
+        await().atMost(DEADLINE).until(() -> local.size() == 5);
+
+        bus.removeBehaviour(id); // r2..r5 still queued for it: the local behaviour had them already
+        leave.countDown();
+        List<String> seen = new CopyOnWriteArrayList<>();
+        bus.addForwarder((EventForwarder) (type, names, data) -> seen.add((String) data.get("robotId")), "B", null,
+                Moved.class.getName());
+        bus.deliver(new Moved("r6"));
+
+        await().atMost(DEADLINE).until(() -> seen.size() == 5);
+        assertThat(seen).containsExactly("r2", "r3", "r4", "r5", "r6");
+        await().atMost(DEADLINE).until(() -> local.size() == 6);
+        assertThat(local).containsExactly("r1", "r2", "r3", "r4", "r5", "r6");
+    }
+
+    @Test
     void aRemoteEventNoBehaviourTakesIsDoneAtOnce() {
         AtomicInteger done = new AtomicInteger();
         assertThat(bus.tryDeliverRemote("x.Unknown", List.of(), Map.of("a", 1), done::incrementAndGet)).isTrue();
