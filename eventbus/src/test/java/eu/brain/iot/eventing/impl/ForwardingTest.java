@@ -61,6 +61,18 @@ class ForwardingTest {
         }
     }
 
+    /** A node that takes one event, then no more until {@code leave} (at most 20 s). */
+    static EventForwarder takesOneThenWaits(CountDownLatch inside, CountDownLatch leave) {
+        return (type, names, data) -> {
+            inside.countDown();
+            try {
+                leave.await(20, TimeUnit.SECONDS);
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+            }
+        };
+    }
+
     final RecordingLogger log = new RecordingLogger();
     final BusCore bus = new BusCore(16, 1_000, log.logger);
 
@@ -120,14 +132,7 @@ class ForwardingTest {
     @Test
     void eventsQueuedForAForwarderThatGoesAwayArePublishedAgainNotDiscarded() throws Exception {
         CountDownLatch inside = new CountDownLatch(1);
-        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
-            inside.countDown();
-            try {
-                new CountDownLatch(1).await(20, TimeUnit.SECONDS); // a node that does not take more
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "B", null, Moved.class.getName());
+        long id = bus.addForwarder(takesOneThenWaits(inside, new CountDownLatch(1)), "B", null, Moved.class.getName());
         for (int i = 1; i <= 5; i++) {
             bus.deliver(new Moved("r" + i));
         }
@@ -252,14 +257,7 @@ class ForwardingTest {
                 null, Moved.class.getName());
         CountDownLatch inside = new CountDownLatch(1);
         CountDownLatch leave = new CountDownLatch(1);
-        long id = bus.addForwarder((EventForwarder) (type, names, data) -> {
-            inside.countDown();
-            try {
-                leave.await(20, TimeUnit.SECONDS); // its node takes no more
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-            }
-        }, "B", null, Moved.class.getName());
+        long id = bus.addForwarder(takesOneThenWaits(inside, leave), "B", null, Moved.class.getName());
         for (int i = 1; i <= 5; i++) {
             bus.deliver(new Moved("r" + i));
         }
