@@ -1,6 +1,13 @@
 package eu.brain.iot.behaviours.warehouse.traffic;
 
+import java.util.ArrayDeque;
+import java.util.ArrayList;
 import java.util.Arrays;
+import java.util.HashMap;
+import java.util.HashSet;
+import java.util.List;
+import java.util.Map;
+import java.util.Set;
 
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.Grid;
@@ -79,7 +86,7 @@ public final class TrafficMap {
     private void markThroughLanes() {
         boolean[] seen = new boolean[lane.length];
         int[] run = new int[lane.length];
-        java.util.List<int[]> exits = new java.util.ArrayList<>();
+        List<int[]> exits = new ArrayList<>();
         for (int c = 0; c < lane.length; c++) {
             if (!lane[c] || seen[c] || laneNeighbours(c) > 1) {
                 continue; // a run is walked from one of its ends
@@ -100,8 +107,8 @@ public final class TrafficMap {
             }
             int exitA = openNeighbour(run[0], size > 1 ? run[1] : -1, -1);
             int exitB = openNeighbour(run[size - 1], size > 1 ? run[size - 2] : -1, exitA);
-            if (exitA < 0 || exitB < 0) {
-                continue; // a dead end or pocket: a place to wait, not a passage
+            if (exitA < 0 || exitB < 0 || around(run, size, exitA, exitB)) {
+                continue; // a dead end or pocket (a corner too): a place to wait, not a passage
             }
             int id = exits.size();
             exits.add(new int[] {exitA, exitB});
@@ -111,6 +118,39 @@ public final class TrafficMap {
             }
         }
         runExits = exits.toArray(new int[0][]);
+    }
+
+    /**
+     * Whether robots can go from one exit of a lane run to the other around it, in at most two steps more than
+     * through it: a run along a room's wall or in its corner, not a way between rooms. Taken for a passage, such a
+     * run holding a robot's dock or a cart's cell was never entered: waiting on a goal in a passage costs as much
+     * as waiting beside it.
+     */
+    private boolean around(int[] run, int size, int exitA, int exitB) {
+        int limit = size + 3;
+        Set<Integer> inRun = new HashSet<>();
+        for (int i = 0; i < size; i++) {
+            inRun.add(run[i]);
+        }
+        Map<Integer, Integer> steps = new HashMap<>();
+        ArrayDeque<Integer> queue = new ArrayDeque<>();
+        steps.put(exitA, 0);
+        queue.add(exitA);
+        while (!queue.isEmpty()) {
+            int c = queue.poll();
+            int d = steps.get(c);
+            if (c == exitB) {
+                return true;
+            }
+            if (d < limit) {
+                for (int n : neighbours[c]) {
+                    if (!inRun.contains(n) && steps.putIfAbsent(n, d + 1) == null) {
+                        queue.add(n);
+                    }
+                }
+            }
+        }
+        return false;
     }
 
     private int laneNeighbours(int c) {

@@ -51,6 +51,18 @@ class FleetPlannerTest {
     }
 
     @Test
+    void aRobotWhoseDockOrCartIsInARoomsCornerEntersIt() {
+        TrafficMap map = TrafficMap.parse(SMALL);
+        assertThat(map.passages()).as("the door only: a corner is no passage").isEqualTo(1);
+        PlanRun run = new PlanRun(SMALL, 12, map.cell(1, 2), map.cell(9, 6));
+        run.goal[0] = run.cell(1, 1); // the dock in the docking area's corner, from the cell below it
+        run.goal[1] = run.cell(10, 7); // a cart in the unload area's corner
+        int steps = run.runUntil(40, r -> FleetPlanner.NO_GOAL);
+        assertThat(run.violations).isEmpty();
+        assertThat(steps).as("steps until both stand at their goals").isBetween(1, 10);
+    }
+
+    @Test
     void twoRobotsMeetingHeadOnInACorridorPassUsingAPocket() {
         String corridor = String.join("\n",
                 "#########",
