@@ -68,11 +68,16 @@ final class Orphans {
                         null);
                 ConsumerChannel[] to = EventHold.without(route.targets(own), e.reached);
                 accepted = to.length == 0 || bus.send(to, route, own, mayWait, null);
-            } else if (e.payload instanceof BrainIoTEvent event) {
-                accepted = !mayWait ? bus.tryDeliver(event) : deliver(() -> bus.deliver(event));
+            } else if (!mayWait) {
+                accepted = e.payload instanceof BrainIoTEvent event ? bus.tryDeliver(event)
+                        : bus.tryDeliver(e.type(), (Map<String, Object>) e.payload);
             } else {
-                Map<String, Object> fields = (Map<String, Object>) e.payload;
-                accepted = !mayWait ? bus.tryDeliver(e.type(), fields) : deliver(() -> bus.deliver(e.type(), fields));
+                if (e.payload instanceof BrainIoTEvent event) {
+                    bus.deliver(event); // waits for room, throws when there is none
+                } else {
+                    bus.deliver(e.type(), (Map<String, Object>) e.payload);
+                }
+                accepted = true;
             }
         } catch (EventBusOverflowException full) {
             accepted = false;
@@ -80,7 +85,9 @@ final class Orphans {
         if (!accepted) {
             e.counters.discarded.increment();
             log.warn("An event of type {} queued for a node that left the fabric found every queue full when it was "
-                    + "published again; it was discarded and counted as 'discarded' (bus:stats).", e.type());
+                    + "published again; it was discarded and counted as 'discarded' (bus:stats). A consumer that keeps "
+                    + "its queue full needs looking at (bus:behaviours), or raise queue.capacity or "
+                    + "overflow.timeout.ms in the configuration {}.", e.type(), BusConfig.PID);
         }
     }
 
@@ -92,11 +99,5 @@ final class Orphans {
             }
         }
         return false;
-    }
-
-    /** @return true: a waiting {@code deliver} that returns accepted the event (it throws when it could not) */
-    private static boolean deliver(Runnable deliver) {
-        deliver.run();
-        return true;
     }
 }
