@@ -42,4 +42,9 @@ record BusStats(Map<String, Long> published) {
     long outcomesPublished() {
         return published.getOrDefault("eu.brain.iot.edge.api.CommandOutcome", 0L);
     }
+
+    /** Has every command published an outcome, no more and no fewer? */
+    boolean everyCommandAnswered() {
+        return commandsPublished() == outcomesPublished();
+    }
 }

@@ -26,6 +26,8 @@ final class ScenarioRunner {
     private static final Duration NODE_READY_TIMEOUT = Duration.ofSeconds(180);
     private static final Duration EDGE_TIMEOUT = Duration.ofSeconds(60);
     private static final long LOOK_EVERY_MS = 100;
+    /** How long the bus counters may take to show an outcome for every command published before the run ended. */
+    private static final Duration BUS_SETTLE = Duration.ofSeconds(5);
 
     private final Options options;
     private final List<String> arguments;
@@ -206,7 +208,7 @@ final class ScenarioRunner {
         List<Verdict.Check> extra = new ArrayList<>();
         if (node.alive()) {
             try {
-                bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+                bus = settledBusStats(node);
             } catch (IOException e) {
                 out.println("scenario: could not read the bus statistics: " + e.getMessage());
             }
@@ -228,6 +230,22 @@ final class ScenarioRunner {
         Summary.print(out, run);
         out.println("report: " + options.report());
         return verdict.passed() ? 0 : 1;
+    }
+
+    /**
+     * The node's bus counters once every command published has its outcome. When the warehouse is done a door's
+     * closing command may still be on its way, and {@code bus:stats} reads one type's counter after another, so a
+     * command and its outcome can fall between two reads. Read again until they agree, for at most
+     * {@link #BUS_SETTLE}; the last read goes into the report either way, so a command never answered shows.
+     */
+    private static BusStats settledBusStats(FabricNode node) throws IOException, InterruptedException {
+        long deadline = System.nanoTime() + BUS_SETTLE.toNanos();
+        BusStats bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+        while (!bus.everyCommandAnswered() && System.nanoTime() < deadline) {
+            Thread.sleep(LOOK_EVERY_MS);
+            bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+        }
+        return bus;
     }
 
     /** With --broker: did the node join the fabric through it (its log says so), and if not, why not? */
