@@ -195,7 +195,9 @@ if [[ -z $broker_uri ]]; then
     }
   fi
   broker_log="$state_dir/broker.log"
-  java -jar "$broker_jar" --port "$broker_port" --data "$state_dir/broker" >"$broker_log" 2>&1 </dev/null &
+  # in memory: the fabric needs no broker persistence (each node keeps an event until the receiving node acknowledged
+  # it, federation/README.md), and sessions in files doubled node-to-node latency (BENCHMARKS.md)
+  java -jar "$broker_jar" --port "$broker_port" --data "$state_dir/broker" --in-memory >"$broker_log" 2>&1 </dev/null &
   broker_pid=$!
   await_line "$broker_pid" "$broker_log" "broker listening on " "the embedded broker (127.0.0.1:$broker_port)"
   broker_uri="tcp://127.0.0.1:$broker_port"

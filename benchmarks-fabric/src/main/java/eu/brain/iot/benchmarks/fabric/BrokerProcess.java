@@ -6,13 +6,14 @@ import java.net.ServerSocket;
 import java.net.Socket;
 import java.nio.file.Files;
 import java.nio.file.Path;
+import java.util.ArrayList;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
 
 /**
  * A broker the benchmark starts in a process of its own on a free port of 127.0.0.1, with a fresh state folder:
- * the embedded broker ({@code broker/target/broker.jar}, file persistence, as {@code ./fabric-node --nodes} runs it)
- * or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED}; Nagle's algorithm off). Stopped by
+ * the embedded broker ({@code broker/target/broker.jar}, in memory as {@code ./fabric-node --nodes} runs it, or
+ * with file persistence, its own default) or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED}; Nagle's algorithm off). Stopped by
  * {@link #close}.
  */
 final class BrokerProcess implements AutoCloseable {
@@ -33,18 +34,27 @@ final class BrokerProcess implements AutoCloseable {
         this.address = address;
     }
 
-    static BrokerProcess embedded(Path root, Path work) throws IOException, InterruptedException {
+    /**
+     * @param inMemory sessions and queued messages in memory only (the broker's {@code --in-memory}), else in files
+     *        under the state folder
+     */
+    static BrokerProcess embedded(Path root, Path work, boolean inMemory) throws IOException, InterruptedException {
         Path jar = root.resolve("broker/target/broker.jar");
         if (!Files.isRegularFile(jar)) {
             throw new IOException(jar + " does not exist: build it (mvn -B -pl broker package -DskipTests)");
         }
         int port = freePort();
-        Path data = Files.createDirectories(work.resolve("embedded-broker"));
+        String folder = inMemory ? "embedded-broker" : "embedded-broker-file";
+        Path data = Files.createDirectories(work.resolve(folder));
         Path java = Path.of(System.getProperty("java.home"), "bin", "java");
-        Process p = new ProcessBuilder(List.of(java.toString(), "-jar", jar.toString(), "--port",
-                String.valueOf(port), "--data", data.toString()))
-                .redirectErrorStream(true).redirectOutput(work.resolve("embedded-broker.log").toFile()).start();
-        return started("embedded broker (HiveMQ CE 2025.5)", p, port);
+        List<String> command = new ArrayList<>(List.of(java.toString(), "-jar", jar.toString(), "--port",
+                String.valueOf(port), "--data", data.toString()));
+        if (inMemory) {
+            command.add("--in-memory");
+        }
+        Process p = new ProcessBuilder(command).redirectErrorStream(true)
+                .redirectOutput(work.resolve(folder + ".log").toFile()).start();
+        return started("embedded broker (HiveMQ CE 2025.5" + (inMemory ? ", in memory)" : ", file persistence)"), p, port);
     }
 
     static BrokerProcess mosquitto(Path work) throws IOException, InterruptedException {

@@ -102,13 +102,14 @@ public final class FabricBench {
 
     private static void runOn(String broker, Settings settings, boolean nodes, boolean install, Results results)
             throws Exception {
-        if (broker.equals("mosquitto") && settings.mosquittoUri() != null) {
+        if (broker.equals(Settings.MOSQUITTO) && settings.mosquittoUri() != null) {
             runOn("Mosquitto " + settings.mosquittoUri(), BrokerAddress.parse(settings.mosquittoUri()), settings,
                     nodes, install, results);
             return;
         }
-        try (BrokerProcess b = broker.equals("embedded") ? BrokerProcess.embedded(settings.root(), settings.work())
-                : BrokerProcess.mosquitto(settings.work())) {
+        try (BrokerProcess b = broker.equals(Settings.MOSQUITTO) ? BrokerProcess.mosquitto(settings.work())
+                : BrokerProcess.embedded(settings.root(), settings.work(),
+                        !broker.equals(Settings.EMBEDDED_FILE))) {
             System.err.println("fabric-bench: " + b.name() + " at " + b.address().uri());
             runOn(b.name(), b.address(), settings, nodes, install, results);
         }

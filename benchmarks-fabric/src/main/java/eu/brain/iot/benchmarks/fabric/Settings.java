@@ -8,7 +8,8 @@ import java.util.List;
  *
  * @param parts                what to measure: {@code bare} (two bare clients), {@code nodes} (node to node),
  *                             {@code install} (a remote install on demand), {@code local} (the local bus of one node)
- * @param brokers              which brokers, in order: {@code embedded}, {@code mosquitto}
+ * @param brokers              which brokers, in order: {@code embedded}, {@code embedded-file},
+ *                             {@code mosquitto}
  * @param mosquittoUri         a Mosquitto already running (null: the benchmark starts Debian's on a free port)
  * @param floodMessages        messages measured back to back
  * @param floodWarmup          messages sent first and not measured
@@ -24,13 +25,19 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
 
     /** What {@code --parts} takes, in the order of the table. */
     static final List<String> PARTS = List.of("bare", "nodes", "install", "local");
+    static final String EMBEDDED = "embedded";
+    static final String EMBEDDED_FILE = "embedded-file";
+    static final String MOSQUITTO = "mosquitto";
+    static final List<String> BROKERS = List.of(EMBEDDED, EMBEDDED_FILE, MOSQUITTO);
 
     static final String USAGE = """
             Usage: java -jar benchmarks-fabric/target/fabric-bench.jar [options]
               --parts LIST          bare,nodes,install,local (default all: two bare MQTT clients, node to node, a
                                     remote install on demand, one node's local bus); node to node and the remote
                                     install need the federation bundle in node/target/fabric-node.jar
-              --brokers LIST        embedded,mosquitto (default both, in that order)
+              --brokers LIST        embedded,mosquitto (default both, in that order); embedded is the broker as
+                                    ./fabric-node --nodes runs it (in memory), embedded-file with its sessions and
+                                    queued messages in files (the broker's own default)
               --mosquitto-uri URI   a running Mosquitto (default: start Debian's /usr/sbin/mosquitto on a free port)
               --messages N          messages measured back to back (default 200000)
               --warmup N            messages sent before them, not measured (default 50000)
@@ -44,7 +51,7 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
 
     static Settings parse(String[] args) {
         List<String> parts = PARTS;
-        List<String> brokers = List.of("embedded", "mosquitto");
+        List<String> brokers = List.of(EMBEDDED, MOSQUITTO);
         String mosquitto = null;
         int messages = 200_000;
         int warmup = 50_000;
@@ -76,8 +83,9 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
             }
         }
         for (String b : brokers) {
-            if (!b.equals("embedded") && !b.equals("mosquitto")) {
-                throw new IllegalArgumentException("--brokers takes embedded and mosquitto, found '" + b + "'");
+            if (!BROKERS.contains(b)) {
+                throw new IllegalArgumentException("--brokers takes " + String.join(", ", BROKERS) + ", found '" + b
+                        + "'");
             }
         }
         for (String p : parts) {
