@@ -13,8 +13,8 @@ import java.util.concurrent.TimeUnit;
 /**
  * A broker the benchmark starts in a process of its own on a free port of 127.0.0.1, with a fresh state folder:
  * the embedded broker ({@code broker/target/broker.jar}, in memory as {@code ./fabric-node --nodes} runs it, or
- * with file persistence, its own default) or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED}; Nagle's algorithm off). Stopped by
- * {@link #close}.
+ * with file persistence, its own default) or Debian's Mosquitto (no persistence, its default; {@link #MAX_QUEUED};
+ * Nagle's algorithm off). Stopped by {@link #close}.
  */
 final class BrokerProcess implements AutoCloseable {
     private static final long START_TIMEOUT_S = 60;
@@ -54,7 +54,8 @@ final class BrokerProcess implements AutoCloseable {
         }
         Process p = new ProcessBuilder(command).redirectErrorStream(true)
                 .redirectOutput(work.resolve(folder + ".log").toFile()).start();
-        return started("embedded broker (HiveMQ CE 2025.5" + (inMemory ? ", in memory)" : ", file persistence)"), p, port);
+        String kind = inMemory ? "in memory" : "file persistence";
+        return started("embedded broker (HiveMQ CE 2025.5, " + kind + ")", p, port);
     }
 
     static BrokerProcess mosquitto(Path work) throws IOException, InterruptedException {
