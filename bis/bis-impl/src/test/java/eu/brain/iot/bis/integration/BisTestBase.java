@@ -218,9 +218,13 @@ abstract class BisTestBase {
         return busStatistics.consumers().stream().anyMatch(c -> symbolicName.equals(c.bundle));
     }
 
-    /** Calls a bis:* Gogo command function (the command object is registered as a service) and returns its text. */
+    /**
+     * Calls a bis:* Gogo command function and returns its text. The command object is a service of its own, which
+     * may come a moment after the installer's (a new configuration restarts both): it is waited for.
+     */
     String command(String function, Object... args) throws Exception {
-        ServiceReference<?>[] refs = context.getServiceReferences((String) null, "(osgi.command.scope=bis)");
+        ServiceReference<?>[] refs = await().atMost(DEADLINE).until(
+                () -> context.getServiceReferences((String) null, "(osgi.command.scope=bis)"), r -> r != null);
         Object commands = context.getService(refs[0]);
         for (var m : commands.getClass().getMethods()) {
             if (m.getName().equals(function) && m.getParameterCount() == args.length) {
