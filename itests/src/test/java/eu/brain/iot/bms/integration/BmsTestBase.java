@@ -152,9 +152,14 @@ abstract class BmsTestBase {
         return command("bis", function, args);
     }
 
-    /** Calls a Gogo command {@code scope:function} as the shell does and returns its text. */
+    /**
+     * Calls a Gogo command {@code scope:function} as the shell does and returns its text. The command object is a
+     * service of its own, which may come a moment after the service it serves: it is waited for.
+     */
     String command(String scope, String function, Object... args) throws Exception {
-        ServiceReference<?>[] refs = context.getServiceReferences((String) null, "(osgi.command.scope=" + scope + ")");
+        ServiceReference<?>[] refs = await().atMost(DEADLINE).until(
+                () -> context.getServiceReferences((String) null, "(osgi.command.scope=" + scope + ")"),
+                r -> r != null);
         assertThat(refs).as("the %s:* commands", scope).hasSize(1);
         Object commands = context.getService(refs[0]);
         for (var m : commands.getClass().getMethods()) {
