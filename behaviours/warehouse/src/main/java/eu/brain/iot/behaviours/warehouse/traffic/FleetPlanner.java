@@ -267,7 +267,9 @@ public final class FleetPlanner {
             heading[r] = 0;
             return;
         }
-        if (before >= 0 && before != cell[r] && map.passage(before) != run) {
+        if (before >= 0 && before != cell[r]) {
+            // entered from outside, or moved along it: pushed back against the way it came in, it now drives the
+            // way it moves, as do the robots that pushed it (else two claims of one passage would face each other)
             heading[r] = SpaceTimeSearch.moveDirection(map, before, cell[r], run);
         } else if (heading[r] == 0 || before < 0 || map.passage(before) != run) {
             int g = goal[r] == NO_GOAL ? cell[r] : goal[r];
@@ -275,6 +277,22 @@ public final class FleetPlanner {
             heading[r] = d[map.passageExit(run, 1)] <= d[map.passageExit(run, 0)] ? 1 : -1;
         }
         claims.add(r, run, heading[r], 0, window); // until its plan says when it leaves
+    }
+
+    /**
+     * Where the robot plans for this round: its goal; but a robot in a passage heading away from its goal (it made way
+     * for robots coming the other way) plans for the passage's end ahead of it, so that it drives on out of the
+     * passage instead of stopping in it, facing the way it came, in front of the robots that follow it.
+     */
+    private int wayOn(int r) {
+        int run = map.passage(cell[r]);
+        if (run < 0 || heading[r] == 0) {
+            return goal[r];
+        }
+        int ahead = map.passageExit(run, heading[r] > 0 ? 1 : 0);
+        int behind = map.passageExit(run, heading[r] > 0 ? 0 : 1);
+        int[] d = distances.to(goal[r]);
+        return d[ahead] > d[behind] ? ahead : goal[r];
     }
 
     private void progress(int r) {
@@ -297,7 +315,7 @@ public final class FleetPlanner {
      * @return whether the robot has a plan (else it has no reservation beyond step 0)
      */
     private boolean planOne(int r, int depth) {
-        int to = goal[r] == NO_GOAL ? cell[r] : goal[r];
+        int to = goal[r] == NO_GOAL ? cell[r] : wayOn(r);
         boolean[] blocked = carrying[r] ? carts : null;
         int[] forbidden = new int[0];
         int[] until = new int[0];

@@ -138,8 +138,6 @@ class FleetPlannerTest {
     }
 
     @Test
-    @org.junit.jupiter.api.Disabled("the planner's known limit: two robots each way in a lane with one-cell pockets "
-            + "livelock (they take turns entering and leaving the passages); behaviours/README.md, \"Traffic\"")
     void robotsGoingOutMeetRobotsComingBackInASingleLaneAndAllComplete() {
         assertThat(corridorTrips(2)).as("steps until every robot went out and came back").isPositive();
     }
