@@ -57,23 +57,10 @@ final class CartRelease {
      * @return whether a robot without an errand may claim a cart now
      */
     boolean open(long goingForCarts, boolean anyCarrying, int doors) {
-        return free(goingForCarts, anyCarrying, doors) > 0;
-    }
-
-    /**
-     * @param goingForCarts robots on their way to a cart now
-     * @param anyCarrying   whether some robot carries a cart to storage now
-     * @param doors         the warehouse's doors (at least one counts)
-     * @return how many more robots may claim a cart now (0 when none may); which of them go is {@link ReleaseOrder}'s
-     */
-    long free(long goingForCarts, boolean anyCarrying, int doors) {
-        long limit = perDoor ? (long) robots * Math.max(1, doors) : anyCarrying ? 0 : robots;
-        return Math.max(0, limit - goingForCarts);
-    }
-
-    /** @return which robots go first when fewer may go than wait: nearest a door when released continuously */
-    ReleaseOrder order(long freshNanos) {
-        return perDoor ? ReleaseOrder.nearestDoorFirst(freshNanos, System::nanoTime) : ReleaseOrder.asAsked();
+        if (!perDoor) {
+            return !anyCarrying && goingForCarts < robots;
+        }
+        return goingForCarts < (long) robots * Math.max(1, doors);
     }
 
     /**

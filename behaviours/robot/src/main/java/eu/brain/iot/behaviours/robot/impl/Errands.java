@@ -18,9 +18,9 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * {@code RobotSmartBehaviour} hosts Robot1..3 of every group), whose extern functions this bundle registers once.
  * <p>
  * The table keeps who does what; each decision is a policy of its own: when a robot may claim a cart
- * ({@link CartRelease}), which robot first when several wait ({@link ReleaseOrder}), which cart ({@link CartChoice}),
- * which storage cell once it lifted it ({@link StorageChoice}), and the dock of a robot met out on the floor
- * ({@link DockingWay}). After placing its cart a robot heads for its dock (the docking cell where it was first seen). behaviours/README.md, "Errands", states the rules.
+ * ({@link CartRelease}), which cart ({@link CartChoice}), which storage cell once it lifted it ({@link StorageChoice}),
+ * and the dock of a robot met out on the floor ({@link DockingWay}). After placing its cart a robot heads for its dock
+ * (the docking cell where it was first seen). behaviours/README.md, "Errands", states the rules.
  * <p>
  * Not thread-safe: owned by the robot fleet's thread ({@link RobotFleet}).
  */
@@ -45,8 +45,6 @@ final class Errands {
     private final Map<String, Errand> errands = new HashMap<>();
     /** When a robot without an errand may claim a cart, and which. */
     private final CartRelease release;
-    /** Which robots waiting for a cart go first. */
-    private final ReleaseOrder releaseOrder;
     private final Map<String, Cell> docks = new HashMap<>();
     /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
     private final Map<String, Cell> remembered = new HashMap<>();
@@ -63,16 +61,7 @@ final class Errands {
 
     /** @param release when a robot without an errand may claim a cart, and which */
     Errands(CartRelease release) {
-        this(release, ReleaseOrder.asAsked());
-    }
-
-    /**
-     * @param release when a robot without an errand may claim a cart, and which
-     * @param order   which robots go first when fewer may go than wait
-     */
-    Errands(CartRelease release, ReleaseOrder order) {
         this.release = release;
-        this.releaseOrder = order;
     }
 
     /** The robot was seen here; the first docking cell it is seen on is its dock. */
@@ -210,18 +199,15 @@ final class Errands {
      * has not started back: no robot comes up through the door against the robots going down) and fewer than a
      * wave's robots go for carts; once a robot lifts its cart, no new claim until every cart of the wave is placed in
      * storage, then the next wave goes down. Released continuously (the traffic planner), a robot may claim while
-     * fewer than its share of robots per door go for carts. Of the robots that wait, those the {@link ReleaseOrder}
-     * puts first go.
+     * fewer than its share of robots per door go for carts.
      *
-     * @param robot a robot without an errand, which asks
-     * @param at    where it waits
-     * @param grid  the map (its doors)
-     * @return whether it may claim a cart now
+     * @param grid the map (its doors)
+     * @return whether a robot without an errand may claim a cart now
      */
-    boolean mayClaim(String robot, Cell at, Grid grid) {
+    boolean waveOpen(Grid grid) {
         long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
         boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
-        return releaseOrder.mayGo(robot, at, release.free(toCart, carrying, grid.cells(Grid.DOORWAY).size()), grid);
+        return release.open(toCart, carrying, grid.cells(Grid.DOORWAY).size());
     }
 
     /** @return whether a robot carrying a cart back may set off now ({@link CartRelease#mayCarryBack}) */
@@ -236,10 +222,10 @@ final class Errands {
 
     /**
      * Claims the nearest waiting cart (released continuously through one door: the farthest, {@link CartRelease}) for a
-     * robot without an errand, when it may claim one ({@link #mayClaim}).
+     * robot without an errand, when the wave is open ({@link #waveOpen}).
      */
     Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
-        if (!mayClaim(robot, at, grid)) {
+        if (!waveOpen(grid)) {
             return Optional.empty();
         }
         List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
@@ -252,7 +238,6 @@ final class Errands {
         CartState best = chosen.get();
         Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
         errands.put(robot, e);
-        releaseOrder.went(robot);
         return Optional.of(e);
     }
 

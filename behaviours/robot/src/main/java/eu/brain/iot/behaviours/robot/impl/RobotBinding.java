@@ -308,7 +308,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             case "START" -> {
                 boolean waitsAtOpeningDoor = s.facesDoor() && !doorAheadClosed(s);
                 if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
-                        || fleet.mayStart(s))) {
+                        || fleet.mayStart())) {
                     unloadLocation(in, area);
                 }
             }

@@ -88,8 +88,6 @@ public final class RobotFleet {
     private long lastFigures;
     /** The docks learnt, kept for a run of this behaviour started again, and the map they were read for. */
     static final String DOCK_BOOK = "docks.tsv";
-    /** Polls a robot's ask for a cart counts ({@link ReleaseOrder}): the binding asks again at every poll. */
-    private static final int ASK_POLLS = 4;
     private final DockBook book;
     private Grid bookOf;
 
@@ -102,11 +100,11 @@ public final class RobotFleet {
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
         this.retries = Math.max(0, config.command_retries());
+        this.errands = new Errands(
+                config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
+                        : CartRelease.waves(config.wave_robots()));
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
-        CartRelease release = config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
-                : CartRelease.waves(config.wave_robots());
-        this.errands = new Errands(release, release.order(pollNanos * ASK_POLLS));
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
                 ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
@@ -364,14 +362,10 @@ public final class RobotFleet {
         return errands.mayCarryBack(robot, view.robots());
     }
 
-    /**
-     * @param s a robot without an errand, at its dock
-     * @return whether it may set off now: a cart waits, the door policy has room, and no robot that waits goes
-     *         before it ({@link Errands#mayClaim})
-     */
-    boolean mayStart(RobotState s) {
+    /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
+    boolean mayStart() {
         Optional<Grid> grid = view.grid();
-        return grid.isPresent() && workLeft() && errands.mayClaim(s.id(), s.cell(), grid.get());
+        return grid.isPresent() && errands.waveOpen(grid.get()) && workLeft();
     }
 
     /** The robot is docked: its errand is over. */

@@ -39,14 +39,6 @@ class CartReleaseTest {
     }
 
     @Test
-    void howManyMoreRobotsMayGoNow() {
-        assertThat(CartRelease.continuous(10).free(7, true, 3)).isEqualTo(23);
-        assertThat(CartRelease.continuous(10).free(31, true, 3)).as("never below none").isZero();
-        assertThat(CartRelease.waves(4).free(1, false, 1)).isEqualTo(3);
-        assertThat(CartRelease.waves(4).free(1, true, 1)).as("the wave carries its carts back").isZero();
-    }
-
-    @Test
     void aReleaseLetsAtLeastOneRobotGo() {
         assertThat(CartRelease.waves(0).open(0, false, 1)).isTrue();
         assertThat(CartRelease.waves(0).open(1, false, 1)).isFalse();

@@ -8,7 +8,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.atomic.AtomicLong;
 
 import org.junit.jupiter.api.Test;
 
@@ -63,25 +62,6 @@ class ErrandsTest {
         }
         assertThat(carts).extracting(CartState::cell).doesNotHaveDuplicates()
                 .allMatch(c -> BAND.area(c) == Grid.STORAGE);
-    }
-
-    @Test
-    void releasedContinuouslyTheRobotWaitingNearestTheDoorClaimsTheLastPlace() {
-        AtomicLong now = new AtomicLong();
-        Errands errands = new Errands(CartRelease.continuous(1), ReleaseOrder.nearestDoorFirst(1_000, now::get));
-        Cell farDock = new Cell(1, 1);
-        Cell nearDock = new Cell(6, 1); // straight above the door
-        errands.seen("robot1", farDock, true);
-        errands.seen("robot2", nearDock, true);
-        List<CartState> carts = List.of(new CartState("cart1", new Cell(3, 8), null),
-                new CartState("cart2", new Cell(9, 8), null));
-
-        assertThat(errands.mayClaim("robot2", nearDock, BAND)).isTrue();
-        assertThat(errands.claim("robot1", farDock, carts, BAND)).as("robot2 waits nearer the door").isEmpty();
-        assertThat(errands.claim("robot2", nearDock, carts, BAND)).isPresent();
-        assertThat(errands.claim("robot1", farDock, carts, BAND)).as("one robot per door goes at once").isEmpty();
-        errands.lifted("robot2", new Cell(9, 8), carts, BAND);
-        assertThat(errands.claim("robot1", farDock, carts, BAND)).as("robot2's place is free again").isPresent();
     }
 
     @Test
