@@ -271,7 +271,7 @@ public final class FleetPlanner {
             // entered from outside, or moved along it: pushed back against the way it came in, it now drives the
             // way it moves, as do the robots that pushed it (else two claims of one passage would face each other)
             heading[r] = SpaceTimeSearch.moveDirection(map, before, cell[r], run);
-        } else if (heading[r] == 0 || before < 0 || map.passage(before) != run) {
+        } else if (heading[r] == 0 || before < 0) { // first seen in it, or standing where it stood
             int g = goal[r] == NO_GOAL ? cell[r] : goal[r];
             int[] d = distances.to(g);
             heading[r] = d[map.passageExit(run, 1)] <= d[map.passageExit(run, 0)] ? 1 : -1;
