@@ -4,7 +4,7 @@
  * Smart behaviours compile against this package.
  */
 @Export
-@Version("1.1.0")
+@Version("1.2.0")
 package eu.brain.iot.edge.api;
 
 import org.osgi.annotation.bundle.Export;

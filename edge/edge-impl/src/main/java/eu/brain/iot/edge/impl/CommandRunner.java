@@ -29,10 +29,7 @@ final class CommandRunner {
     }
 
     CompletableFuture<CommandOutcome> run(EdgeCommand command) {
-        CommandOutcome outcome = new CommandOutcome();
-        outcome.commandId = command.commandId != null ? command.commandId : UUID.randomUUID().toString();
-        outcome.deviceId = command.deviceId;
-        outcome.command = command.getClass().getSimpleName();
+        CommandOutcome outcome = outcome(command);
         CompletableFuture<FleetApi.CommandReply> reply;
         try {
             check(command);
@@ -41,6 +38,19 @@ final class CommandRunner {
             return CompletableFuture.completedFuture(finish(outcome, false, e.getMessage(), 0, null));
         }
         return reply.thenApply(r -> finish(outcome, r.accepted(), r.reason(), r.status(), r.missionId()));
+    }
+
+    /** Refuses the command without sending it, publishing why. */
+    CompletableFuture<CommandOutcome> refuse(EdgeCommand command, String reason) {
+        return CompletableFuture.completedFuture(finish(outcome(command), false, reason, 0, null));
+    }
+
+    private static CommandOutcome outcome(EdgeCommand command) {
+        CommandOutcome outcome = new CommandOutcome();
+        outcome.commandId = command.commandId != null ? command.commandId : UUID.randomUUID().toString();
+        outcome.deviceId = command.deviceId;
+        outcome.command = command.getClass().getSimpleName();
+        return outcome;
     }
 
     private CommandOutcome finish(CommandOutcome outcome, boolean accepted, String reason, int status,

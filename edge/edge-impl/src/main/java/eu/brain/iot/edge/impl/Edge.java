@@ -1,12 +1,17 @@
 package eu.brain.iot.edge.impl;
 
+import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.CompletionStage;
+import java.util.concurrent.RejectedExecutionException;
+import java.util.concurrent.TimeUnit;
 
 import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.DeviceReport;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.DeviceOwnership;
@@ -20,9 +25,16 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
  * The edge without a framework, put together: one fleet thread; the {@link FleetApi} (the fleet's REST API)
  * shared by polling, mission tracking and commands; the {@link DeviceStore} where every change happens; the
  * {@link EdgeEvents} derived from its changes and the {@link Outbox} they leave by; the {@link FleetPoller}, which
- * only schedules polls, of the devices this node owns ({@link Ownership}); the {@link WorldReader}, which reads the carts and the map from the fleet's world. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet thread), store,
- * then resource listeners (SSE) and edge events (bus). The DS component wraps it; tests and the benchmark use it
- * directly.
+ * only schedules polls, of the devices this node owns ({@link Ownership}); the {@link WorldReader}, which reads the
+ * carts and the map from the fleet's world. The flow of a poll: poller, fleet API (HTTP threads), poller again (fleet
+ * thread), store, then resource listeners (SSE) and edge events (bus). The DS component wraps it; tests and the
+ * benchmark use it directly.
+ * <p>
+ * A fleet shared between the nodes of a fabric (a share other than {@code all}): every poll period the edge reports
+ * the devices it owns ({@link DeviceReport}, on the fleet thread), and its model shows the devices the other nodes
+ * report beside its own ({@link RemoteDevices}). A command reaches every node's edge; the owner performs it, the
+ * others leave it, except the node it was published on when no node owns the device now: that one refuses it, so
+ * that the command has an outcome.
  */
 final class Edge implements DeviceModel, AutoCloseable {
 
@@ -33,6 +45,10 @@ final class Edge implements DeviceModel, AutoCloseable {
     private final FleetPoller poller;
     private final WorldReader world;
     private final CommandRunner commands;
+    private final FleetThread fleet;
+    private final String nodeName;
+    private final RemoteDevices remote;
+    private final EdgeLog log;
 
     /** An edge on a node without a name ({@value EdgeNode#DEFAULT_NAME}). */
     Edge(FleetSettings settings, EventSink events, EdgeLog log) {
@@ -42,6 +58,10 @@ final class Edge implements DeviceModel, AutoCloseable {
     /** @param nodeName the node's name, given on every command to the fleet */
     Edge(FleetSettings settings, String nodeName, EventSink events, EdgeLog log) {
         FleetThread fleet = new FleetThread();
+        this.fleet = fleet;
+        this.nodeName = nodeName;
+        this.log = log;
+        this.remote = new RemoteDevices(nodeName, freshMillis(settings), System::nanoTime);
         this.api = new FleetApi(nodeName);
         this.ownership = new Ownership(nodeName);
         this.outbox = new Outbox(events, log);
@@ -53,11 +73,53 @@ final class Edge implements DeviceModel, AutoCloseable {
         this.world = new WorldReader(fleet, api, store, log);
         poller.configure(settings);
         world.configure(settings);
+        fleet.run(this::report, "the first report of this node's devices", log);
     }
 
     void configure(FleetSettings settings) {
         poller.configure(settings);
         world.configure(settings);
+        remote.freshMillis(freshMillis(settings));
+    }
+
+    /** How long another node's report holds: several of its periods, and longer than a lease's hand-over. */
+    static long freshMillis(FleetSettings settings) {
+        return Math.max(REPORT_HOLDS_MIN_MILLIS, REPORT_HOLDS_PERIODS * settings.periodMillis());
+    }
+
+    private static final long REPORT_HOLDS_MIN_MILLIS = 2_500;
+    private static final long REPORT_HOLDS_PERIODS = 5;
+    /** The report's period before the edge has settings (the poll period's default). */
+    private static final long DEFAULT_REPORT_MILLIS = 500;
+
+    /** On the fleet thread, every poll period: the devices this node owns, to the other nodes of a shared fleet. */
+    private void report() {
+        FleetSettings s = api.settings();
+        try {
+            if (s != null && s.share().mode() != Share.Mode.ALL) {
+                DeviceReport r = new DeviceReport();
+                r.node = nodeName;
+                r.devices = RemoteDevices.encode(store.snapshots());
+                if (!r.devices.isEmpty()) {
+                    outbox.publish(r);
+                }
+            }
+        } finally {
+            try {
+                fleet.schedule(this::report, s == null ? DEFAULT_REPORT_MILLIS : s.periodMillis(),
+                        TimeUnit.MILLISECONDS);
+            } catch (RejectedExecutionException closing) {
+                // the edge is closing: no more reports
+            }
+        }
+    }
+
+    /** Another node's report (on the bus's thread). */
+    void reported(DeviceReport r) {
+        int skipped = remote.accept(r, id -> store.contains(id));
+        if (skipped > 0) {
+            log.warn("a device report from node " + r.node + " had " + skipped + " malformed entries, skipped");
+        }
     }
 
     FleetSettings settings() {
@@ -103,19 +165,61 @@ final class Edge implements DeviceModel, AutoCloseable {
         return commands.run(command);
     }
 
+    /**
+     * A command from the bus, which brings every command to every node's edge: performed when this node has the
+     * device; otherwise left to the other nodes, except on the node it was published on when no node reports the
+     * device now: refused there, saying why (no such device; or its owner stopped reporting it, its devices changing
+     * hands), so that every command has one outcome.
+     *
+     * @param publishedHere whether the command was published on this node
+     * @return the outcome, or empty when the command is another node's to perform
+     */
+    Optional<CompletableFuture<CommandOutcome>> execute(EdgeCommand command, boolean publishedHere) {
+        String device = command.deviceId;
+        if (device == null || store.contains(device)) {
+            return Optional.of(commands.run(command));
+        }
+        if (!publishedHere || remote.owner(device).isPresent()) {
+            return Optional.empty();
+        }
+        Optional<String> last = remote.lastOwner(device);
+        if (last.isEmpty()) {
+            return Optional.of(commands.run(command)); // refused: no such device, saying which there are
+        }
+        return Optional.of(commands.refuse(command, "no node owns " + device + " now: node " + last.get()
+                + ", which owned it, has not reported it for " + freshMillis(api.settings())
+                + " ms (a lease lapsing hands its devices to the other nodes); send the command again"));
+    }
+
     @Override
     public List<ProviderSnapshot> providers() {
-        return store.snapshots();
+        List<ProviderSnapshot> local = store.snapshots();
+        List<ProviderSnapshot> others = remote.snapshots();
+        if (others.isEmpty()) {
+            return local;
+        }
+        List<ProviderSnapshot> all = new ArrayList<>(local);
+        for (ProviderSnapshot p : others) {
+            if (!store.contains(p.id())) {
+                all.add(p);
+            }
+        }
+        all.sort(Comparator.comparing(ProviderSnapshot::id));
+        return all;
     }
 
     @Override
     public Optional<ProviderSnapshot> provider(String providerId) {
-        return store.snapshot(providerId);
+        Optional<ProviderSnapshot> local = store.snapshot(providerId);
+        return local.isPresent() ? local : remote.snapshot(providerId);
     }
 
     @Override
     public Optional<ResourceValue> resource(String providerId, String service, String resource) {
-        return store.resource(providerId, service, resource);
+        if (providerId != null && store.contains(providerId)) {
+            return store.resource(providerId, service, resource);
+        }
+        return remote.snapshot(providerId).map(p -> p.services().get(service)).map(r -> r.get(resource));
     }
 
     @Override

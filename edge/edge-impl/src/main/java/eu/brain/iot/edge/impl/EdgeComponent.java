@@ -7,6 +7,7 @@ import java.util.Set;
 import java.util.concurrent.CompletionStage;
 
 import org.osgi.framework.BundleContext;
+import org.osgi.framework.Constants;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.ConfigurationPolicy;
@@ -18,6 +19,7 @@ import org.osgi.service.log.LoggerFactory;
 import org.osgi.service.metatype.annotations.Designate;
 
 import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.DeviceReport;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.DeviceOwnership;
@@ -27,6 +29,7 @@ import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceListener;
 import eu.brain.iot.edge.model.api.ResourceValue;
 import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
+import eu.brain.iot.eventing.api.BrainIoTEvent;
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.SmartBehaviour;
 
@@ -43,13 +46,16 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  */
 @Component(service = { DeviceModel.class, SmartBehaviour.class, PollMonitor.class, DeviceOwnership.class },
         configurationPid = EdgeConfig.PID, configurationPolicy = ConfigurationPolicy.OPTIONAL, immediate = true)
-@SmartBehaviourDefinition(consumed = EdgeCommand.class, author = "BRAIN-IoT fabric", name = "sensiNact edge",
-        description = "Performs robot and door commands over the fleet's REST API")
+@SmartBehaviourDefinition(consumed = { EdgeCommand.class, DeviceReport.class }, author = "BRAIN-IoT fabric",
+        name = "sensiNact edge", description = "Performs robot and door commands over the fleet's REST API, and shows"
+                + " the devices other nodes of a shared fleet report")
 @Designate(ocd = EdgeConfig.class)
-public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeCommand>, PollMonitor, DeviceOwnership {
+public final class EdgeComponent implements DeviceModel, SmartBehaviour<BrainIoTEvent>, PollMonitor, DeviceOwnership {
 
     private final Edge edge;
     private final Logger log;
+    /** This framework's UUID: the bus names it as the source of the events published here. */
+    private final String frameworkUuid;
 
     /**
      * Framework property: the fleet's URL when the configuration sets no {@code fleet.url} (so that
@@ -65,6 +71,7 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
             @Reference EventBus bus, @Reference(service = LoggerFactory.class) Logger log) {
         this.log = log;
         this.frameworkFleetUrl = context.getProperty(FLEET_URL_PROPERTY);
+        this.frameworkUuid = context.getProperty(Constants.FRAMEWORK_UUID);
         FleetSettings settings = checked(config);
         String node = nodeName(context.getProperty(EdgeNode.PROPERTY));
         this.edge = new Edge(settings, node, bus::tryDeliver, EdgeLog.of(log));
@@ -119,8 +126,12 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<EdgeComm
     }
 
     @Override
-    public void notify(EdgeCommand command) {
-        edge.execute(command);
+    public void notify(BrainIoTEvent event) {
+        if (event instanceof EdgeCommand command) {
+            edge.execute(command, command.sourceNode == null || command.sourceNode.equals(frameworkUuid));
+        } else if (event instanceof DeviceReport report) {
+            edge.reported(report);
+        }
     }
 
     @Override
