@@ -77,6 +77,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
  * components with a service until someone gets it).
  * <p>
+ * In a fabric whose nodes share the fleet, only the instance that leads ({@link FleetLeadership}) looks and handles
+ * events; the others leave everything as it is.
+ * <p>
  * Threads: {@link #notify} (the bus's delivery thread) makes of every event a {@link RobotInput} ({@link #INPUTS}) and
  * hands it to the fleet's thread ({@link RobotFleet#thread()}), which handles it ({@link InputHandler}), owns all of
  * this class's state (and the fleet's) and is the only one that evaluates the rules and publishes.
@@ -112,6 +115,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     static final int DOOR_LOOKAHEAD = 3;
 
     private final RobotFleet fleet;
+    private final FleetLeadership leadership;
     private final EventBus bus;
     private final RobotSmartBehaviour model;
     private final long patienceNanos;
@@ -135,10 +139,11 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     }
 
     @Activate
-    public RobotBinding(@Reference RobotFleet fleet, @Reference EventBus bus,
+    public RobotBinding(@Reference RobotFleet fleet, @Reference FleetLeadership leadership, @Reference EventBus bus,
             @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotSmartBehaviour)")
             SmartBehaviour<?> model, RobotConfig config) {
         this.fleet = fleet;
+        this.leadership = leadership;
         this.bus = bus;
         this.model = (RobotSmartBehaviour) model;
         this.thread = fleet.thread();
@@ -169,7 +174,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         }
         try {
             thread.execute(() -> {
-                if (closed) {
+                if (closed || !leadership.leads()) {
                     return;
                 }
                 try {
@@ -252,6 +257,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     }
 
     private void safeTick() {
+        if (!leadership.leads()) {
+            return; // another instance of the fabric drives the fleet (FleetLeadership)
+        }
         try {
             fleet.trafficStep();
             for (RobotState s : fleet.view().robots()) {

@@ -1,0 +1,120 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.Objects;
+import java.util.UUID;
+import java.util.concurrent.Executors;
+import java.util.concurrent.ScheduledExecutorService;
+import java.util.concurrent.TimeUnit;
+
+import org.osgi.service.component.annotations.Activate;
+import org.osgi.service.component.annotations.Component;
+import org.osgi.service.component.annotations.Deactivate;
+import org.osgi.service.component.annotations.Reference;
+
+import eu.brain.iot.edge.model.api.DeviceOwnership;
+import eu.brain.iot.eventing.annotation.SmartBehaviourDefinition;
+import eu.brain.iot.eventing.api.EventBus;
+import eu.brain.iot.eventing.api.SmartBehaviour;
+
+/**
+ * Whether this robot behaviour instance drives the fleet ({@link #leads}): on a node alone, always; in a fabric
+ * whose nodes share the fleet, the instances beat ({@link RobotBehaviourAlive}, every {@value #BEAT_MILLIS} ms of
+ * wall time) and the rule of {@link Leadership} picks one. The others stay passive: their binding neither looks at
+ * the robots nor publishes, so their model instances stay where they started, and the one that leads next takes the
+ * robots over from the device model as a behaviour started again does.
+ * <p>
+ * Threads: the beat thread (one, its own) publishes and decides; the bus's thread records what it hears; both under
+ * this object's lock. {@link #leads} reads a volatile.
+ */
+@Component(service = { SmartBehaviour.class, FleetLeadership.class }, immediate = true)
+@SmartBehaviourDefinition(consumed = RobotBehaviourAlive.class, author = "BRAIN-IoT fabric",
+        name = "Robot fleet leadership", description = "Picks the one robot behaviour instance of a fabric that drives"
+                + " the fleet")
+public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive> {
+
+    /** Wall time between two beats of an instance. */
+    static final long BEAT_MILLIS = 500;
+    /** An instance not heard for this long is gone (a lease period of the fabric's devices). */
+    static final long ALIVE_MILLIS = 2_000;
+
+    private static final System.Logger LOG = System.getLogger(FleetLeadership.class.getName());
+
+    private final EventBus bus;
+    private final DeviceOwnership ownership;
+    private final Leadership rule;
+    private final ScheduledExecutorService beats = Executors.newSingleThreadScheduledExecutor(r -> {
+        Thread t = new Thread(r, "robot-fleet-leadership");
+        t.setDaemon(true);
+        return t;
+    });
+    private volatile boolean leads;
+    /** The leader last logged; under the lock. */
+    private Leadership.Instance lastLeader;
+
+    @Activate
+    public FleetLeadership(@Reference EventBus bus, @Reference DeviceOwnership ownership) {
+        this.bus = bus;
+        this.ownership = ownership;
+        this.rule = new Leadership(new Leadership.Instance(ownership.nodeName(), UUID.randomUUID().toString(),
+                System.currentTimeMillis()), ALIVE_MILLIS, System.nanoTime());
+        this.leads = wholeFleetHere();
+        beats.scheduleAtFixedRate(this::beat, 0, BEAT_MILLIS, TimeUnit.MILLISECONDS);
+    }
+
+    @Deactivate
+    void deactivate() {
+        beats.shutdownNow();
+    }
+
+    /** @return whether this instance drives the fleet now */
+    public boolean leads() {
+        return leads;
+    }
+
+    @Override
+    public synchronized void notify(RobotBehaviourAlive beat) {
+        if (beat.instance != null && beat.node != null) {
+            rule.heard(new Leadership.Instance(beat.node, beat.instance, beat.startedMillis), System.nanoTime());
+        }
+    }
+
+    private void beat() {
+        try {
+            Leadership.Instance self = rule.self();
+            RobotBehaviourAlive alive = new RobotBehaviourAlive();
+            alive.node = self.node();
+            alive.instance = self.id();
+            alive.startedMillis = self.startedMillis();
+            bus.tryDeliver(alive);
+            decide();
+        } catch (RuntimeException e) {
+            LOG.log(System.Logger.Level.WARNING, "robot fleet leadership: a beat failed", e);
+        }
+    }
+
+    private synchronized void decide() {
+        Leadership.Instance leader = rule.leader(wholeFleetHere(), System.nanoTime());
+        boolean now = leader == rule.self();
+        if (!Objects.equals(leader, lastLeader)) {
+            if (now) {
+                LOG.log(System.Logger.Level.INFO, "robot fleet: this instance (node {0}) drives the fleet{1}",
+                        rule.self().node(), lastLeader == null ? "" : "; the one on node " + lastLeader.node()
+                                + " is not heard any more");
+            } else if (leader != null) {
+                LOG.log(System.Logger.Level.INFO, "robot fleet: the instance on node {0} drives the fleet; this one"
+                        + " (node {1}) stands by and takes over if it stops", leader.node(), rule.self().node());
+            }
+            if (leads && !now && leader != null) {
+                LOG.log(System.Logger.Level.WARNING, "robot fleet: an instance that started earlier (node {0}) is"
+                        + " heard again: this one stops driving the fleet", leader.node());
+            }
+            lastLeader = leader;
+        }
+        leads = now;
+    }
+
+    private boolean wholeFleetHere() {
+        var fleet = ownership.fleet();
+        return !fleet.isEmpty() && ownership.owned().containsAll(fleet);
+    }
+}

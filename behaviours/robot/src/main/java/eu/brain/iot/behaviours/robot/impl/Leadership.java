@@ -1,0 +1,70 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import java.util.Comparator;
+import java.util.HashMap;
+import java.util.Map;
+
+/**
+ * The rule that makes one robot behaviour instance of a fabric drive the whole fleet: one errand table (a cart is
+ * claimed once fleet-wide) and one traffic planner's reservation table. Every instance hears every other's
+ * {@link RobotBehaviourAlive}; the instances heard within {@link #aliveMillis} are alive, and the one that started
+ * first (then the lowest instance id) leads. An instance on a node that has the whole fleet leads at once; on a
+ * fleet shared between nodes it first listens for {@link #aliveMillis}, so that an instance starting beside one that
+ * already drives the fleet never drives it too. When the leader stops beating (its node died), the next one leads
+ * after {@link #aliveMillis}, and takes the robots over as a behaviour started again does.
+ * <p>
+ * Not thread-safe: its owner ({@link FleetLeadership}) calls it under its lock.
+ */
+final class Leadership {
+
+    /** An instance, as its beats say. */
+    record Instance(String node, String id, long startedMillis) {
+    }
+
+    private static final Comparator<Instance> ELDEST = Comparator.comparingLong(Instance::startedMillis)
+            .thenComparing(Instance::id);
+
+    private final Instance self;
+    private final long aliveMillis;
+    private final long startedNanos;
+    /** The other instances and when each was last heard (nanos). */
+    private final Map<String, Heard> others = new HashMap<>();
+
+    private record Heard(Instance instance, long atNanos) {
+    }
+
+    Leadership(Instance self, long aliveMillis, long nowNanos) {
+        this.self = self;
+        this.aliveMillis = aliveMillis;
+        this.startedNanos = nowNanos;
+    }
+
+    Instance self() {
+        return self;
+    }
+
+    void heard(Instance other, long nowNanos) {
+        if (!other.id().equals(self.id())) {
+            others.put(other.id(), new Heard(other, nowNanos));
+        }
+    }
+
+    /**
+     * @param wholeFleetHere whether this node has every device of the fleet (a node alone)
+     * @return the instance that drives the fleet now, as this one sees it
+     */
+    Instance leader(boolean wholeFleetHere, long nowNanos) {
+        long window = aliveMillis * 1_000_000L;
+        others.values().removeIf(h -> nowNanos - h.atNanos() > window);
+        Instance best = self;
+        for (Heard h : others.values()) {
+            if (ELDEST.compare(h.instance(), best) < 0) {
+                best = h.instance();
+            }
+        }
+        if (best == self && !wholeFleetHere && others.isEmpty() && nowNanos - startedNanos < window) {
+            return null; // still listening for an instance that drives the fleet already
+        }
+        return best;
+    }
+}

@@ -1,0 +1,62 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import org.junit.jupiter.api.Test;
+
+/** One robot behaviour instance of a fabric drives the fleet: the eldest alive; a newcomer listens first. */
+class LeadershipTest {
+
+    private static final long MS = 1_000_000L;
+    private static final Leadership.Instance A = new Leadership.Instance("node1", "a", 1_000);
+    private static final Leadership.Instance B = new Leadership.Instance("node2", "b", 2_000);
+
+    @Test
+    void aNodeWithTheWholeFleetLeadsAtOnce() {
+        Leadership alone = new Leadership(A, 2_000, 0);
+        assertThat(alone.leader(true, 0)).isEqualTo(A);
+    }
+
+    @Test
+    void onASharedFleetANewInstanceListensForOneAlivePeriodThenLeadsWhenNobodyElseIsHeard() {
+        Leadership b = new Leadership(B, 2_000, 0);
+        assertThat(b.leader(false, 1_999 * MS)).isNull();
+        assertThat(b.leader(false, 2_001 * MS)).isEqualTo(B);
+    }
+
+    @Test
+    void theEldestInstanceHeardLeadsAndTheYoungerStandsBy() {
+        Leadership a = new Leadership(A, 2_000, 0);
+        Leadership b = new Leadership(B, 2_000, 0);
+        a.heard(B, 100 * MS);
+        b.heard(A, 100 * MS);
+
+        assertThat(a.leader(false, 200 * MS)).isEqualTo(A);
+        assertThat(b.leader(false, 200 * MS)).isEqualTo(A);
+    }
+
+    @Test
+    void whenTheLeaderIsNotHeardForAnAlivePeriodTheNextTakesOver() {
+        Leadership b = new Leadership(B, 2_000, 0);
+        b.heard(A, 100 * MS);
+        assertThat(b.leader(false, 2_000 * MS)).isEqualTo(A);
+
+        assertThat(b.leader(false, 2_101 * MS)).isEqualTo(B);
+    }
+
+    @Test
+    void aYoungerInstanceHeardDoesNotTakeTheLeadAndItsOwnBeatsAreIgnored() {
+        Leadership a = new Leadership(A, 2_000, 0);
+        a.heard(A, 0);
+        a.heard(B, 0);
+        assertThat(a.leader(false, 10 * MS)).isEqualTo(A);
+    }
+
+    @Test
+    void equalStartsAreDecidedByTheInstanceId() {
+        Leadership.Instance c = new Leadership.Instance("node3", "c", 1_000);
+        Leadership l = new Leadership(c, 2_000, 0);
+        l.heard(A, 0);
+        assertThat(l.leader(false, 10 * MS)).isEqualTo(A);
+    }
+}
