@@ -14,13 +14,14 @@ import java.util.List;
 
 /**
  * One scenario run: robot-sim (embedded, on a free loopback port, its clock at the asked speed and its deadlock
- * threshold at the wait limit), a bare fabric node (own JVM) pointed at it; then, every 100 ms of wall time, a look
- * at robot-sim's ground truth: faults injected when due, a progress line every few seconds, until every cart is in
- * storage and every robot back in docking, the deadline, or the node's end. Then the verdict, the summary and the
- * report; both processes stopped, also on Ctrl-C (a shutdown hook).
+ * threshold at the wait limit), a bare fabric node (own JVM) pointed at it, or several sharing the fleet through a
+ * broker ({@link NodeGroup}); then, every 100 ms of wall time, a look at robot-sim's ground truth: faults injected
+ * when due, a progress line every few seconds, until every cart is in storage and every robot back in docking, the
+ * deadline, or the end of every node. Then the verdict, the summary and the report; every process stopped, also on
+ * Ctrl-C (a shutdown hook).
  * <p>
  * Threads: {@link #run} runs on the caller's thread, which owns everything here; the shutdown hook only stops the
- * node and closes the simulator, both idempotent.
+ * nodes (then the broker) and closes the simulator, all idempotent.
  */
 final class ScenarioRunner {
     private static final Duration NODE_READY_TIMEOUT = Duration.ofSeconds(180);
