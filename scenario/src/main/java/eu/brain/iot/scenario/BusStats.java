@@ -28,6 +28,13 @@ record BusStats(Map<String, Long> published) {
         return new BusStats(Map.copyOf(published));
     }
 
+    /** These counters and another node's, added type by type. */
+    BusStats plus(BusStats other) {
+        Map<String, Long> sum = new LinkedHashMap<>(published);
+        other.published.forEach((type, n) -> sum.merge(type, n, Long::sum));
+        return new BusStats(Map.copyOf(sum));
+    }
+
     long totalPublished() {
         return published.values().stream().mapToLong(Long::longValue).sum();
     }

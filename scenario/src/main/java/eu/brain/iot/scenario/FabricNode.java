@@ -197,6 +197,23 @@ final class FabricNode implements AutoCloseable {
         return log;
     }
 
+    /**
+     * Kills the node's JVM outright: {@link Process#destroyForcibly()}, which is SIGKILL on Linux ({@code kill -9}):
+     * no shutdown hook runs, the framework does not stop, the node says no goodbye to its fabric (the broker sends
+     * its Last Will). Waits up to 5 s for the process to be gone.
+     */
+    void kill() throws InterruptedException {
+        process.destroyForcibly();
+        process.waitFor(5, TimeUnit.SECONDS);
+    }
+
+    /** Asks the node to stop (SIGTERM) without waiting, so that several nodes stop together; {@link #stop} waits. */
+    void requestStop() {
+        if (process.isAlive()) {
+            process.destroy();
+        }
+    }
+
     /** Stops the node: SIGTERM (its launcher stops the framework), then, after 15 s, SIGKILL. Idempotent. */
     void stop() {
         if (process.isAlive()) {

@@ -6,23 +6,20 @@ import java.time.Duration;
 import java.util.ArrayList;
 import java.util.Comparator;
 import java.util.List;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 /**
  * Injects the planned faults when their warehouse time comes: a robot offline (and back) through robot-sim's fault
- * API; a behaviour bundle stopped through the node's Gogo shell, as an operator would ({@code lb -s}, then
- * {@code stop <id>}). Keeps a log of what it did, and can tell whether a stopped behaviour is active again.
+ * API; a behaviour bundle stopped through a node's Gogo shell, as an operator would ({@code lb -s}, then
+ * {@code stop <id>}); a fabric node's JVM killed outright. Keeps a log of what it did, and can tell whether a
+ * stopped behaviour is active again.
  * <p>
  * Threads: confined to the runner's loop thread.
  */
 final class FaultInjector {
-    /** {@code lb -s} rows: {@code    42|Active     |    1|eu.brain.iot.behaviours.robot (0.1.0.SNAPSHOT)}. */
-    private static final Pattern BUNDLE_ROW = Pattern.compile("^\\s*(\\d+)\\|(\\w+)\\s*\\|\\s*\\d+\\|(\\S+).*$");
     private static final Duration SHELL_TIMEOUT = Duration.ofSeconds(20);
 
     private final RobotSim sim;
-    private final FabricNode node;
+    private final NodeGroup nodes;
     private final List<Pending> pending = new ArrayList<>();
     private final List<String> log = new ArrayList<>();
     private final List<String> stoppedBundles = new ArrayList<>();
@@ -31,9 +28,12 @@ final class FaultInjector {
     private record Pending(long atMillis, PlannedFault fault, boolean start) {
     }
 
-    FaultInjector(RobotSim sim, FabricNode node, List<PlannedFault> faults) {
+    /** The warehouse time of the look being applied. */
+    private long nowMillis;
+
+    FaultInjector(RobotSim sim, NodeGroup nodes, List<PlannedFault> faults) {
         this.sim = sim;
-        this.node = node;
+        this.nodes = nodes;
         for (PlannedFault f : faults) {
             pending.add(new Pending(f.atMillis(), f, true));
             if (f.endsAtMillis() > f.atMillis()) {
@@ -46,6 +46,7 @@ final class FaultInjector {
     /** Applies every action due at or before this warehouse time; returns what was done, for the terminal. */
     List<String> apply(long warehouseMillis) {
         List<String> done = new ArrayList<>();
+        nowMillis = warehouseMillis;
         while (!pending.isEmpty() && pending.get(0).atMillis() <= warehouseMillis) {
             Pending p = pending.remove(0);
             String what = p.fault().inject(this, p.start());
@@ -86,14 +87,17 @@ final class FaultInjector {
     String stopBehaviour(PlannedFault.StopBehaviour stop) {
         String name = stop.symbolicName();
         try {
-            Bundle b = bundle(name);
-            if (b == null) {
-                return "no bundle " + name + " is installed in the node: nothing to stop";
+            NodeGroup.Found found = nodes.find(name);
+            if (found == null) {
+                return "no bundle " + name + " is installed in " + (nodes.fabricOfNodes() ? "any live node"
+                        : "the node") + ": nothing to stop";
             }
-            List<String> answer = node.shell("stop " + b.id(), SHELL_TIMEOUT).stream()
+            Bundles.Bundle b = found.bundle();
+            List<String> answer = found.member().node.shell("stop " + b.id(), SHELL_TIMEOUT).stream()
                     .filter(l -> !l.isBlank()).toList();
             stoppedBundles.add(name);
-            return "stopped " + name + " (bundle " + b.id() + ", was " + b.state() + ") in the node's shell"
+            return "stopped " + name + " (bundle " + b.id() + ", was " + b.state() + ") in "
+                    + (nodes.fabricOfNodes() ? found.member().spec.name() + "'s shell" : "the node's shell")
                     + (answer.isEmpty() ? "" : ": " + String.join(" ", answer));
         } catch (java.io.IOException e) {
             return "could not stop " + name + ": " + e.getMessage();
@@ -103,15 +107,20 @@ final class FaultInjector {
         }
     }
 
-    /** The bundle with that symbolic name in the node, or null. */
-    Bundle bundle(String symbolicName) throws java.io.IOException, InterruptedException {
-        for (String line : node.shell("lb -s", SHELL_TIMEOUT)) {
-            Matcher m = BUNDLE_ROW.matcher(line);
-            if (m.matches() && m.group(3).equals(symbolicName)) {
-                return new Bundle(Long.parseLong(m.group(1)), m.group(2));
-            }
+    /** Kills a fabric node's JVM outright (SIGKILL: {@link NodeGroup#kill}). */
+    String killNode(PlannedFault.KillNode kill) {
+        try {
+            return nodes.kill(kill.node(), nowMillis);
+        } catch (InterruptedException e) {
+            Thread.currentThread().interrupt();
+            return "interrupted while killing " + kill.node();
         }
-        return null;
+    }
+
+    /** The bundle with that symbolic name in the live nodes (an active one first), or null. */
+    Bundles.Bundle bundle(String symbolicName) throws java.io.IOException, InterruptedException {
+        NodeGroup.Found found = nodes.find(symbolicName);
+        return found == null ? null : found.bundle();
     }
 
     /** Bundles this run stopped (symbolic names). */
@@ -121,9 +130,5 @@ final class FaultInjector {
 
     List<String> log() {
         return List.copyOf(log);
-    }
-
-    /** A bundle as {@code lb -s} shows it. */
-    record Bundle(long id, String state) {
     }
 }

@@ -22,22 +22,38 @@ import java.util.List;
  *                      fail)
  * @param nodeConfigs   extra configuration files copied into the node's configuration folder
  * @param traffic       the robot behaviour's traffic planner drives the robots
- * @param fabric        the fabric the node joins, or null: the node runs alone
+ * @param fabric        the fabric the nodes join, or null: one node runs alone
+ * @param nodes         how many fabric nodes (1..{@value #MAX_NODES}); with 2 or more {@code fabric} is never null
  */
 record Options(Path root, Path map, Generate generate, long seed, double speed, long waitLimitMs, long deadlineMs,
                List<PlannedFault> faults, Path runDir, Path report, long progressMs, boolean behaviours,
-               List<Path> nodeConfigs, boolean traffic, Fabric fabric) {
+               List<Path> nodeConfigs, boolean traffic, Fabric fabric, int nodes) {
+
+    /** The most nodes a run starts (as node/bin/fabric-nodes.sh). */
+    static final int MAX_NODES = 20;
 
     /**
-     * The fabric of nodes the run's node joins through an MQTT 5 broker (federation/README.md).
+     * The fabric of nodes the run's nodes join through an MQTT 5 broker (federation/README.md).
      *
-     * @param broker the broker's URI, {@code tcp://host:port} or {@code ssl://host:port}
+     * @param broker the broker's URI, {@code tcp://host:port} or {@code ssl://host:port}, or null: the run starts the
+     *               embedded broker (broker/) on a free port of 127.0.0.1
      * @param key    the fabric's signing key file, or null: a new key in the run's folder
+     * @param name   the fabric's name (its topic tree's root): {@value #NAME} for one node, unique per run for several
      */
-    record Fabric(String broker, Path key) {
-        /** The fabric's name and the run's node's name in it. */
+    record Fabric(String broker, Path key, String name) {
+        /** The fabric's name with one node, and that node's name in it. */
         static final String NAME = "warehouse";
         static final String NODE = "node1";
+
+        /** One node's fabric: named {@value #NAME}. */
+        Fabric(String broker, Path key) {
+            this(broker, key, NAME);
+        }
+    }
+
+    /** Node K's name (K from 1): {@code nodeK}. */
+    static String nodeName(int k) {
+        return "node" + k;
     }
 
     /** robot-sim's step: the paper's 0.5 s. */

@@ -89,13 +89,22 @@ final class OptionsParser {
         "robot-sim plans each go-to and the orchestrator resolves meetings, robots released in waves",
         "(the robot behaviour's traffic=false)"})
     private boolean noTraffic;
+    @Option(names = "--nodes", paramLabel = "N", order = 15, description = {
+        "a fabric of N nodes, node1..nodeN, each its own JVM owning its share of the fleet",
+        "(1.." + Options.MAX_NODES + ", default 1: one node alone); with 2 or more the run starts the embedded",
+        "broker unless --broker is given"})
+    private String nodes;
+    @Option(names = "--kill-node", paramLabel = "NODE@T", order = 15, description = {
+        "kill node NODE's JVM outright (kill -9) at warehouse time T, e.g. node2@20s",
+        "(repeatable; needs --nodes 2 or more)"})
+    private List<String> killNode = new ArrayList<>();
     @Option(names = "--broker", paramLabel = "URI", order = 15, description = {
-        "the node joins a fabric of nodes through this MQTT 5 broker, e.g. tcp://127.0.0.1:1883",
-        "(federation/README.md); without it the node runs alone"})
+        "the nodes join a fabric of nodes through this MQTT 5 broker, e.g. tcp://127.0.0.1:1883",
+        "(federation/README.md); without it one node runs alone, several join the embedded broker"})
     private String broker;
     @Option(names = "--fabric-key", paramLabel = "FILE", order = 15, description = {
-        "the fabric's signing key, shared by its nodes (with --broker; default: a new key",
-        "in the run's folder)"})
+        "the fabric's signing key, shared by its nodes (with --broker or --nodes; default: a new",
+        "key in the run's folder)"})
     private String fabricKey;
     @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
             description = "the run's folder (scenario/target/runs/<date-time>)")
@@ -181,6 +190,7 @@ final class OptionsParser {
         long waitLimitMs = Math.round(decimal("wait-limit", waitLimit, 10, 0.5, 3600) * 1000);
         long deadlineMs = Math.round(decimal("deadline", deadline, Math.max(30, 3 * cartCount), 0.01, 100_000)
                 * 60_000);
+        int nodeCount = integer("nodes", nodes, 1, 1, Options.MAX_NODES);
         List<PlannedFault> faults = new ArrayList<>();
         try {
             for (String spec : faultOffline) {
@@ -188,6 +198,11 @@ final class OptionsParser {
             }
             for (String spec : stopBehaviour) {
                 faults.add(PlannedFault.StopBehaviour.parse(spec));
+            }
+            for (String spec : killNode) {
+                PlannedFault.KillNode kill = PlannedFault.KillNode.parse(spec);
+                kill.checkNodes(nodeCount);
+                faults.add(kill);
             }
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
@@ -201,7 +216,7 @@ final class OptionsParser {
             }
             nodeConfigs.add(p.toAbsolutePath());
         }
-        Options.Fabric fabric = fabric();
+        Options.Fabric fabric = fabric(nodeCount);
         Path runFolder = runDir != null ? Path.of(runDir).toAbsolutePath()
                 : rootDir.resolve("scenario/target/runs")
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
@@ -211,16 +226,27 @@ final class OptionsParser {
             throw new UsageException("--traffic and --no-traffic: choose one");
         }
         return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
-                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), !noTraffic, fabric);
+                runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), !noTraffic, fabric,
+                nodeCount);
     }
 
-    /** {@code --broker} and {@code --fabric-key}, checked: a URI a fabric node connects to, a readable key. */
-    private Options.Fabric fabric() throws UsageException {
-        if (broker == null) {
+    /**
+     * {@code --broker} and {@code --fabric-key}, checked: a URI a fabric node connects to, a readable key. One node
+     * joins a fabric only with {@code --broker}, in the fabric {@value Options.Fabric#NAME}; several always do, in a
+     * fabric named for the run ({@code warehouse-} and 8 random hex digits), through the embedded broker when no URI
+     * is given.
+     */
+    private Options.Fabric fabric(int nodeCount) throws UsageException {
+        if (broker == null && nodeCount < 2) {
             if (fabricKey != null) {
-                throw new UsageException("--fabric-key needs --broker (the key signs what the node sends through it)");
+                throw new UsageException("--fabric-key needs --broker or --nodes 2 or more (the key signs what the "
+                        + "nodes send through the broker)");
             }
             return null;
+        }
+        Path key = fabricKey();
+        if (broker == null) {
+            return new Options.Fabric(null, key, runFabricName());
         }
         URI uri;
         try {
@@ -233,15 +259,25 @@ final class OptionsParser {
             throw new UsageException("--broker must be an MQTT broker's URI with its port, e.g. tcp://127.0.0.1:1883 "
                     + "or ssl://broker.example:8883, found '" + broker + "'");
         }
-        Path key = null;
-        if (fabricKey != null) {
-            key = Path.of(fabricKey).toAbsolutePath();
-            if (!Files.isRegularFile(key) || !Files.isReadable(key)) {
-                throw new UsageException("--fabric-key " + fabricKey + ": no such readable file (make one with "
-                        + "fabric:keygen in a node's shell, or leave the option out for a new key)");
-            }
+        return nodeCount < 2 ? new Options.Fabric(broker, key) : new Options.Fabric(broker, key, runFabricName());
+    }
+
+    /** {@code --fabric-key}: a readable file, or null for a new key. */
+    private Path fabricKey() throws UsageException {
+        if (fabricKey == null) {
+            return null;
         }
-        return new Options.Fabric(broker, key);
+        Path key = Path.of(fabricKey).toAbsolutePath();
+        if (!Files.isRegularFile(key) || !Files.isReadable(key)) {
+            throw new UsageException("--fabric-key " + fabricKey + ": no such readable file (make one with "
+                    + "fabric:keygen in a node's shell, or leave the option out for a new key)");
+        }
+        return key;
+    }
+
+    /** A fabric name of this run's own, so that nodes of another run on the same broker never meet these. */
+    private static String runFabricName() {
+        return Options.Fabric.NAME + "-" + String.format("%08x", new java.security.SecureRandom().nextInt());
     }
 
     private static int integer(String name, String text, int fallback, int min, int max) throws UsageException {

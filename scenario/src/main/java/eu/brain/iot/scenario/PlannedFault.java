@@ -4,7 +4,8 @@ import java.util.List;
 import java.util.regex.Pattern;
 
 /** A fault the runner injects at a warehouse time (measured from the scenario's start). */
-sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBehaviour {
+sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBehaviour,
+        PlannedFault.KillNode {
 
     long atMillis();
 
@@ -133,6 +134,64 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
         @Override
         public String describe() {
             return "behaviour bundle " + symbolicName() + " stopped at " + WarehouseTime.format(atMillis);
+        }
+    }
+
+    /**
+     * A fabric node's JVM killed outright at {@code atMillis} (SIGKILL, as {@code kill -9}: no goodbye to the fabric,
+     * no lease given back); the other nodes are expected to take its devices when its lease lapses.
+     *
+     * @param node the node's name, {@code node1}..{@code nodeN}
+     */
+    record KillNode(String node, long atMillis) implements PlannedFault {
+        private static final String HOW = "write NODE@TIME, e.g. node2@20s (node2 killed with kill -9 20 s of "
+                + "warehouse time into the scenario)";
+
+        /** {@code node2@20s}; whether the node is one of the run's is checked by {@link #checkNodes}. */
+        static KillNode parse(String spec) {
+            String prefix = "--kill-node '" + spec + "': ";
+            int at = spec.lastIndexOf('@');
+            if (at < 0) {
+                throw new IllegalArgumentException(prefix + HOW + "; the @TIME is missing");
+            }
+            String node = spec.substring(0, at);
+            if (node.isEmpty()) {
+                throw new IllegalArgumentException(prefix + HOW + "; the NODE before '@' is missing");
+            }
+            return new KillNode(node, PlannedFault.part(prefix, "TIME", spec.substring(at + 1)));
+        }
+
+        /**
+         * @param nodes how many nodes the run has
+         * @throws IllegalArgumentException when the node is not one of node1..nodeN, or the run has one node only
+         */
+        void checkNodes(int nodes) {
+            if (nodes < 2) {
+                throw new IllegalArgumentException("--kill-node " + node + ": the run has one node, and killing the "
+                        + "only node would end the run: give --nodes 2 or more");
+            }
+            for (int k = 1; k <= nodes; k++) {
+                if (Options.nodeName(k).equals(node)) {
+                    return;
+                }
+            }
+            throw new IllegalArgumentException("--kill-node: no node '" + node + "'; the run's nodes are "
+                    + (nodes == 2 ? "node1, node2" : "node1.." + Options.nodeName(nodes)) + " (--nodes " + nodes + ")");
+        }
+
+        @Override
+        public long endsAtMillis() {
+            return atMillis;
+        }
+
+        @Override
+        public String inject(FaultInjector injector, boolean start) {
+            return injector.killNode(this);
+        }
+
+        @Override
+        public String describe() {
+            return node + " killed (kill -9) at " + WarehouseTime.format(atMillis);
         }
     }
 }

@@ -86,7 +86,51 @@ final class ReportWriter {
         ArrayNode faults = r.putArray("faults");
         run.faultLog().forEach(faults::add);
         r.put("nodeLog", run.nodeLog().toString());
+        if (!run.nodes().isEmpty()) {
+            nodes(r.putArray("nodes"), run.nodes());
+        }
         return r;
+    }
+
+    /** The per-node section of a run on several nodes: each node as last read (null where unknown). */
+    static void nodes(ArrayNode array, List<NodeReport> nodes) {
+        for (NodeReport n : nodes) {
+            ObjectNode o = array.addObject();
+            o.put("name", n.name());
+            if (n.killedAtWarehouseMs() == null) {
+                o.putNull("killedAtWarehouseSeconds");
+            } else {
+                o.put("killedAtWarehouseSeconds", n.killedAtWarehouseMs() / 1000.0);
+            }
+            strings(o, "devicesOwned", n.devicesOwned());
+            strings(o, "behavioursInstalled", n.behavioursInstalled());
+            counts(o, "eventsSentTo", n.eventsSentTo());
+            counts(o, "eventsReceivedFrom", n.eventsReceivedFrom());
+            if (n.cpuMs() == null) {
+                o.putNull("cpuSeconds");
+                o.putNull("cpuPercentOfOneCore");
+            } else {
+                o.put("cpuSeconds", n.cpuMs() / 1000.0);
+                o.put("cpuPercentOfOneCore", n.cpuPercentOfOneCore());
+            }
+        }
+    }
+
+    private static void strings(ObjectNode o, String name, List<String> values) {
+        if (values == null) {
+            o.putNull(name);
+        } else {
+            values.forEach(o.putArray(name)::add);
+        }
+    }
+
+    private static void counts(ObjectNode o, String name, java.util.Map<String, Long> values) {
+        if (values == null) {
+            o.putNull(name);
+        } else {
+            ObjectNode counts = o.putObject(name);
+            new TreeMap<>(values).forEach(counts::put);
+        }
     }
 
     static void write(Path file, ObjectNode report) throws IOException {
@@ -98,10 +142,14 @@ final class ReportWriter {
      * What the report is made from.
      *
      * @param deliveredAfterMs warehouse ms from the start until every cart was in storage, -1 if never
-     * @param bus              the node's bus counters at the end, or null when they could not be read
+     * @param bus              the nodes' bus counters at the end (summed over the live nodes), or null when they
+     *                         could not be read
+     * @param nodeCpuMs        the nodes' CPU time during the run, summed
+     * @param nodeLog          the node's log (node1's with several)
+     * @param nodes            with several nodes, each node's figures; empty for one node alone
      */
     record Run(List<String> arguments, Options options, WorldSnapshot start, WorldSnapshot end, Verdict verdict,
                long wallMs, long nodeStartMs, long deliveredAfterMs, BusStats bus, long nodeCpuMs,
-               List<String> faultLog, Path nodeLog) {
+               List<String> faultLog, Path nodeLog, List<NodeReport> nodes) {
     }
 }

@@ -14,13 +14,14 @@ import java.util.List;
 
 /**
  * One scenario run: robot-sim (embedded, on a free loopback port, its clock at the asked speed and its deadlock
- * threshold at the wait limit), a bare fabric node (own JVM) pointed at it; then, every 100 ms of wall time, a look
- * at robot-sim's ground truth: faults injected when due, a progress line every few seconds, until every cart is in
- * storage and every robot back in docking, the deadline, or the node's end. Then the verdict, the summary and the
- * report; both processes stopped, also on Ctrl-C (a shutdown hook).
+ * threshold at the wait limit), a bare fabric node (own JVM) pointed at it, or several sharing the fleet through a
+ * broker ({@link NodeGroup}); then, every 100 ms of wall time, a look at robot-sim's ground truth: faults injected
+ * when due, a progress line every few seconds, until every cart is in storage and every robot back in docking, the
+ * deadline, or the end of every node. Then the verdict, the summary and the report; every process stopped, also on
+ * Ctrl-C (a shutdown hook).
  * <p>
  * Threads: {@link #run} runs on the caller's thread, which owns everything here; the shutdown hook only stops the
- * node and closes the simulator, both idempotent.
+ * nodes (then the broker) and closes the simulator, all idempotent.
  */
 final class ScenarioRunner {
     private static final Duration NODE_READY_TIMEOUT = Duration.ofSeconds(180);
@@ -57,39 +58,35 @@ final class ScenarioRunner {
             out.printf("robot-sim: warehouse '%s' %dx%d, %d robots, %d carts, %d doors, seed %d, speed x%s, at %s%n",
                     map.name(), map.width(), map.height(), map.robots().size(), map.carts().size(),
                     map.doors().size(), options.seed(), options.speed(), sim.baseUri());
-            int httpPort = NodeSetup.freePort();
-            java.nio.file.Path configDir = NodeSetup.write(options, sim.baseUri());
-            FabricNode node = FabricNode.start(options.root(), configDir, httpPort, options.runDir().resolve("node.log"),
-                    options.fabric() == null ? null : Options.Fabric.NODE);
+            NodeGroup nodes = NodeGroup.start(options, sim.baseUri(), out);
             Thread hook = new Thread(() -> {
-                System.err.println("warehouse-scenario: stopped before the end; stopping the node and robot-sim");
-                node.stop();
+                System.err.println("warehouse-scenario: stopped before the end; stopping the "
+                        + (nodes.fabricOfNodes() ? "nodes, the broker" : "node") + " and robot-sim");
+                nodes.stop();
                 sim.close();
             }, "scenario-shutdown");
             Runtime.getRuntime().addShutdownHook(hook);
             try {
-                out.printf("node: pid %d, REST API http://127.0.0.1:%d/sensinact, config %s, log %s%n", node.pid(),
-                        httpPort, configDir, node.log());
                 WorldSnapshot start;
                 long startNanos;
-                Duration cpu0;
                 try {
-                    node.awaitReady(NODE_READY_TIMEOUT);
-                    // the run starts when the node is up: its edge polls from then on, and behaviours may act at
-                    // once, before its REST API answers
+                    nodes.awaitReady(NODE_READY_TIMEOUT);
+                    // the run starts when the nodes are up: their edges poll from then on, and behaviours may act
+                    // at once, before their REST APIs answer
                     start = new WorldSnapshot(sim.worldDocument());
                     startNanos = System.nanoTime();
-                    cpu0 = node.cpu();
+                    nodes.markStart(startNanos);
                     List<String> devices = new ArrayList<>(sim.robotIds());
                     devices.addAll(sim.doorIds());
-                    new EdgeProbe(httpPort).awaitDevices(devices, EDGE_TIMEOUT);
+                    nodes.awaitDevices(devices, EDGE_TIMEOUT);
                 } catch (IOException e) {
-                    out.println("scenario: the node did not start: " + e.getMessage());
+                    out.println("scenario: the " + (nodes.fabricOfNodes() ? "nodes" : "node") + " did not start: "
+                            + e.getMessage());
                     return 1;
                 }
-                return observe(sim, node, new Start(start, startNanos, startNanos - wall0, cpu0));
+                return observe(sim, nodes, new Start(start, startNanos, startNanos - wall0));
             } finally {
-                node.stop();
+                nodes.stop();
                 try {
                     Runtime.getRuntime().removeShutdownHook(hook);
                 } catch (IllegalStateException e) {
@@ -147,25 +144,26 @@ final class ScenarioRunner {
     }
 
     /**
-     * The run's start: when the node was up.
+     * The run's start: when the nodes were up.
      *
      * @param world          robot-sim's world then
      * @param nanos          {@link System#nanoTime()} then
      * @param nodeStartNanos from the runner's start until then
-     * @param nodeCpu        the node's CPU time then
      */
-    private record Start(WorldSnapshot world, long nanos, long nodeStartNanos, Duration nodeCpu) {
+    private record Start(WorldSnapshot world, long nanos, long nodeStartNanos) {
     }
 
-    private int observe(RobotSim sim, FabricNode node, Start begin) throws IOException, InterruptedException {
+    private int observe(RobotSim sim, NodeGroup nodes, Start begin) throws IOException, InterruptedException {
         WorldSnapshot start = begin.world();
         long wall0 = begin.nanos();
         long nodeStartNanos = begin.nodeStartNanos();
-        Duration cpu0 = begin.nodeCpu();
-        out.printf("node up after %.1f s (the run starts at robot-sim step %d), its edge sees the fleet; wait limit "
-                        + "%s, deadline %s of warehouse time%n", nodeStartNanos / 1e9, start.step(),
+        FabricNode node = nodes.first();
+        out.printf("%s after %.1f s (the run starts at robot-sim step %d), %s the fleet; wait limit "
+                        + "%s, deadline %s of warehouse time%n",
+                nodes.fabricOfNodes() ? "every node up" : "node up", nodeStartNanos / 1e9, start.step(),
+                nodes.fabricOfNodes() ? "their edges see" : "its edge sees",
                 WarehouseTime.format(options.waitLimitMs()), WarehouseTime.format(options.deadlineMs()));
-        FaultInjector faults = new FaultInjector(sim, node, options.faults());
+        FaultInjector faults = new FaultInjector(sim, nodes, options.faults());
         WorldSnapshot now = start;
         long deliveredAfter = -1;
         long nextProgress = 0;
@@ -174,6 +172,7 @@ final class ScenarioRunner {
             now = new WorldSnapshot(sim.worldDocument());
             long t = Figures.elapsedMs(start, now);
             faults.apply(t).forEach(out::println);
+            nodes.look(System.nanoTime()).forEach(out::println);
             if (deliveredAfter < 0 && now.allDelivered()) {
                 deliveredAfter = t;
             }
@@ -190,25 +189,41 @@ final class ScenarioRunner {
                 how = Judge.RunEnd.DEADLINE;
                 break;
             }
-            if (!node.alive()) {
+            if (nodes.allEnded()) {
                 how = Judge.RunEnd.NODE_ENDED;
-                out.println("scenario: the node ended during the run (exit code " + node.exitCode() + "; its log: "
+                out.println(nodes.fabricOfNodes() ? "scenario: every node ended during the run"
+                        : "scenario: the node ended during the run (exit code " + node.exitCode() + "; its log: "
                         + node.log() + ")");
                 break;
             }
             Thread.sleep(LOOK_EVERY_MS);
         }
-        long wallMs = (System.nanoTime() - wall0) / 1_000_000;
-        long cpuMs = node.cpu().minus(cpu0).toMillis();
+        long endNanos = System.nanoTime();
+        long wallMs = (endNanos - wall0) / 1_000_000;
+        nodes.endRun(endNanos);
+        long cpuMs = nodes.cpuMs();
         for (String late : faults.clear()) {
             // a fault due after the warehouse was done tests nothing: say so rather than pass quietly
             out.println("scenario: fault not done, the run ended first: " + late);
         }
         BusStats bus = null;
         List<Verdict.Check> extra = new ArrayList<>();
-        if (node.alive()) {
+        if (nodes.fabricOfNodes()) {
+            List<FabricNode> live = nodes.members().stream().map(m -> m.node).filter(FabricNode::alive).toList();
+            if (!live.isEmpty()) {
+                try {
+                    bus = settledBusStats(live);
+                } catch (IOException e) {
+                    out.println("scenario: could not read the bus statistics: " + e.getMessage());
+                }
+                extra.addAll(behavioursBack(faults));
+            }
+            nodes.finalReadings();
+            extra.add(FabricChecks.joined(nodes));
+            extra.add(FabricChecks.ranUntilTheEnd(nodes));
+        } else if (node.alive()) {
             try {
-                bus = settledBusStats(node);
+                bus = settledBusStats(List.of(node));
             } catch (IOException e) {
                 out.println("scenario: could not read the bus statistics: " + e.getMessage());
             }
@@ -225,7 +240,8 @@ final class ScenarioRunner {
         checks.addAll(extra);
         Verdict verdict = new Verdict(List.copyOf(checks));
         ReportWriter.Run run = new ReportWriter.Run(arguments, options, start, now, verdict, wallMs,
-                nodeStartNanos / 1_000_000, deliveredAfter, bus, cpuMs, faults.log(), node.log());
+                nodeStartNanos / 1_000_000, deliveredAfter, bus, cpuMs, faults.log(), node.log(),
+                nodes.fabricOfNodes() ? nodes.reports() : List.of());
         ReportWriter.write(options.report(), ReportWriter.report(run));
         Summary.print(out, run);
         out.println("report: " + options.report());
@@ -233,19 +249,27 @@ final class ScenarioRunner {
     }
 
     /**
-     * The node's bus counters once every command published has its outcome. When the warehouse is done a door's
-     * closing command may still be on its way, and {@code bus:stats} reads one type's counter after another, so a
-     * command and its outcome can fall between two reads. Read again until they agree, for at most
+     * The nodes' bus counters, summed, once every command published has its outcome. When the warehouse is done a
+     * door's closing command may still be on its way, and {@code bus:stats} reads one type's counter after another,
+     * so a command and its outcome can fall between two reads. Read again until they agree, for at most
      * {@link #BUS_SETTLE}; the last read goes into the report either way, so a command never answered shows.
      */
-    private static BusStats settledBusStats(FabricNode node) throws IOException, InterruptedException {
+    private static BusStats settledBusStats(List<FabricNode> live) throws IOException, InterruptedException {
         long deadline = System.nanoTime() + BUS_SETTLE.toNanos();
-        BusStats bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+        BusStats bus = busStats(live);
         while (!bus.everyCommandAnswered() && System.nanoTime() < deadline) {
             Thread.sleep(LOOK_EVERY_MS);
-            bus = BusStats.parse(node.shell("bus:stats", Duration.ofSeconds(20)));
+            bus = busStats(live);
         }
         return bus;
+    }
+
+    private static BusStats busStats(List<FabricNode> live) throws IOException, InterruptedException {
+        BusStats sum = BusStats.parse(List.of());
+        for (FabricNode n : live) {
+            sum = sum.plus(BusStats.parse(n.shell("bus:stats", Duration.ofSeconds(20))));
+        }
+        return sum;
     }
 
     /** With --broker: did the node join the fabric through it (its log says so), and if not, why not? */
@@ -271,7 +295,7 @@ final class ScenarioRunner {
         for (String name : faults.stoppedBundles()) {
             String state;
             try {
-                FaultInjector.Bundle b = faults.bundle(name);
+                Bundles.Bundle b = faults.bundle(name);
                 state = b == null ? "not installed" : b.state();
             } catch (IOException e) {
                 state = "unknown (" + e.getMessage() + ")";

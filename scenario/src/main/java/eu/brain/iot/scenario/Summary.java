@@ -20,6 +20,36 @@ final class Summary {
         return detail.substring(0, cut > 0 ? cut : DETAIL_CHARS) + ", ... (the whole list is in the report)";
     }
 
+    /**
+     * One node of several: {@code node2 killed at 20.0 s: owns robot2; behaviours robot; sent node1 120, node3 4;
+     * received node1 80; CPU 12.3 s (41% of one core)}.
+     */
+    static String nodeLine(NodeReport n) {
+        StringBuilder line = new StringBuilder(n.name());
+        if (n.killedAtWarehouseMs() != null) {
+            line.append(" killed at ").append(WarehouseTime.format(n.killedAtWarehouseMs()));
+        }
+        line.append(": owns ").append(n.devicesOwned() == null ? "?" : n.devicesOwned().isEmpty() ? "nothing"
+                : String.join(", ", n.devicesOwned()));
+        line.append("; behaviours ").append(n.behavioursInstalled() == null ? "?"
+                : n.behavioursInstalled().isEmpty() ? "none" : String.join(", ", n.behavioursInstalled().stream()
+                        .map(b -> b.startsWith(Bundles.BEHAVIOUR_PREFIX) ? b.substring(Bundles.BEHAVIOUR_PREFIX
+                                .length()) : b).toList()));
+        line.append("; sent ").append(counts(n.eventsSentTo()));
+        line.append("; received ").append(counts(n.eventsReceivedFrom()));
+        line.append(n.cpuMs() == null ? "; CPU ?" : String.format(Locale.ROOT, "; CPU %.1f s (%.0f%% of one core)",
+                n.cpuMs() / 1000.0, n.cpuPercentOfOneCore() == null ? 0.0 : n.cpuPercentOfOneCore()));
+        return line.toString();
+    }
+
+    private static String counts(java.util.Map<String, Long> counts) {
+        if (counts == null) {
+            return "?";
+        }
+        return counts.isEmpty() ? "none" : String.join(", ", new TreeMap<>(counts).entrySet().stream()
+                .map(e -> e.getKey() + " " + e.getValue()).toList());
+    }
+
     static void print(PrintStream out, ReportWriter.Run run) {
         WorldSnapshot start = run.start();
         WorldSnapshot end = run.end();
@@ -52,6 +82,9 @@ final class Summary {
                     run.wallMs() <= 0 ? 0.0 : run.bus().totalPublished() * 1000.0 / run.wallMs(),
                     run.bus().commandsPublished(), run.bus().outcomesPublished(), run.nodeCpuMs() / 1000.0,
                     run.wallMs() <= 0 ? 0.0 : 100.0 * run.nodeCpuMs() / run.wallMs());
+        }
+        for (NodeReport n : run.nodes()) {
+            out.println(nodeLine(n));
         }
         for (Verdict.Check c : run.verdict().checks()) {
             out.printf("%s  %s: %s%n", c.passed() ? "PASS" : "FAIL", c.name(), shorten(c.detail()));

@@ -33,4 +33,23 @@ class BusStatsTest {
 
         assertThat(bus.everyCommandAnswered()).isFalse();
     }
+
+    @Test
+    void theNodesCountersAreSummedTypeByType() {
+        BusStats node1 = BusStats.parse(List.of(HEADER,
+                "eu.brain.iot.edge.api.CommandOutcome   5 5 0 0 0 0",
+                "eu.brain.iot.edge.api.GoToCommand       5 5 0 0 0 0"));
+        BusStats node2 = BusStats.parse(List.of(HEADER,
+                "eu.brain.iot.edge.api.CommandOutcome   3 3 0 0 0 0",
+                "eu.brain.iot.edge.api.OpenDoorCommand   3 3 0 0 0 0",
+                "eu.brain.iot.federation.api.DeviceLease 40 40 0 0 0 0"));
+
+        BusStats sum = BusStats.parse(List.of()).plus(node1).plus(node2);
+
+        assertThat(sum.published()).containsEntry("eu.brain.iot.edge.api.CommandOutcome", 8L)
+                .containsEntry("eu.brain.iot.federation.api.DeviceLease", 40L);
+        assertThat(sum.commandsPublished()).isEqualTo(8);
+        assertThat(sum.totalPublished()).isEqualTo(56);
+        assertThat(sum.everyCommandAnswered()).isTrue();
+    }
 }

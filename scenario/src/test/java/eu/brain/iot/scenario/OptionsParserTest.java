@@ -111,7 +111,7 @@ class OptionsParserTest {
         assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1"))
                 .hasMessageStartingWith("--broker must be an MQTT broker's URI with its port");
         assertThatThrownBy(() -> OptionsParser.parse("--fabric-key", "k")).hasMessage("--fabric-key needs --broker "
-                + "(the key signs what the node sends through it)");
+                + "or --nodes 2 or more (the key signs what the nodes send through the broker)");
         assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1:1883", "--fabric-key",
                 dir.resolve("none").toString())).hasMessageContaining("no such readable file");
     }
