@@ -1,5 +1,7 @@
 package eu.brain.iot.behaviours.warehouse;
 
+import java.util.ArrayList;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.atomic.AtomicLong;
@@ -24,6 +26,8 @@ public final class CommandLedger {
     private final String prefix;
     private final AtomicLong next = new AtomicLong();
     private final Map<String, Sent> pending = new ConcurrentHashMap<>();
+    /** When each pending command was published ({@link System#nanoTime()}). */
+    private final Map<String, Long> sentAt = new ConcurrentHashMap<>();
     private final AtomicLong sent = new AtomicLong();
     private final AtomicLong accepted = new AtomicLong();
     private final AtomicLong refused = new AtomicLong();
@@ -43,10 +47,12 @@ public final class CommandLedger {
     public String send(EdgeCommand command, String why) {
         command.commandId = prefix + next.incrementAndGet();
         pending.put(command.commandId, new Sent(command, why));
+        sentAt.put(command.commandId, System.nanoTime());
         try {
             bus.deliver(command);
         } catch (RuntimeException e) {
             pending.remove(command.commandId);
+            sentAt.remove(command.commandId);
             throw e;
         }
         sent.incrementAndGet();
@@ -62,9 +68,26 @@ public final class CommandLedger {
     public Sent answered(CommandOutcome outcome) {
         Sent s = outcome.commandId == null ? null : pending.remove(outcome.commandId);
         if (s != null) {
+            sentAt.remove(outcome.commandId);
             (outcome.accepted ? accepted : refused).incrementAndGet();
         }
         return s;
+    }
+
+    /**
+     * @param olderThanNanos how long ago, at least, the command was published
+     * @return the commandIds of the commands still without an outcome that long after they were published (in a
+     *         fabric, the node that owned the device may have died with the command)
+     */
+    public List<String> unanswered(long olderThanNanos) {
+        long now = System.nanoTime();
+        List<String> late = new ArrayList<>();
+        sentAt.forEach((id, at) -> {
+            if (now - at > olderThanNanos) {
+                late.add(id);
+            }
+        });
+        return late;
     }
 
     public long sent() {

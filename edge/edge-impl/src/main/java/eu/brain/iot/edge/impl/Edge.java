@@ -82,13 +82,18 @@ final class Edge implements DeviceModel, AutoCloseable {
         remote.freshMillis(freshMillis(settings));
     }
 
-    /** How long another node's report holds: several of its periods, and longer than a lease's hand-over. */
+    /**
+     * How long another node's report holds: several of its periods, and shorter than a device lease (2 s), so that
+     * a command is not left to a node that died and whose devices are about to change hands.
+     */
     static long freshMillis(FleetSettings settings) {
-        return Math.max(REPORT_HOLDS_MIN_MILLIS, REPORT_HOLDS_PERIODS * settings.periodMillis());
+        return Math.min(REPORT_HOLDS_MAX_MILLIS, Math.max(REPORT_HOLDS_MIN_MILLIS,
+                REPORT_HOLDS_PERIODS * settings.periodMillis()));
     }
 
-    private static final long REPORT_HOLDS_MIN_MILLIS = 2_500;
-    private static final long REPORT_HOLDS_PERIODS = 5;
+    private static final long REPORT_HOLDS_MIN_MILLIS = 1_000;
+    private static final long REPORT_HOLDS_MAX_MILLIS = 1_500;
+    private static final long REPORT_HOLDS_PERIODS = 4;
     /** The report's period before the edge has settings (the poll period's default). */
     private static final long DEFAULT_REPORT_MILLIS = 500;
 

@@ -261,6 +261,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             return; // another instance of the fabric drives the fleet (FleetLeadership)
         }
         try {
+            fleet.expireUnanswered();
             fleet.trafficStep();
             for (RobotState s : fleet.view().robots()) {
                 evaluate(s.id());

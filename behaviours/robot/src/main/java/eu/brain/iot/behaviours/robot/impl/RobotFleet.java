@@ -436,6 +436,26 @@ public final class RobotFleet {
         LOG.log(System.Logger.Level.WARNING, "{0}: errand planned anew after {1} refusals", robot, n);
     }
 
+    /**
+     * On the binding's look (its thread): a command without an outcome {@link #ANSWER_TIMEOUT_NANOS} after it was
+     * published counts as refused (in a fabric, the node that owned the robot may have died with it): sent again,
+     * or the errand planned anew, as for any refusal. An outcome that comes after all is not one of the ledger's
+     * any more, and is ignored.
+     */
+    void expireUnanswered() {
+        for (String id : ledger.unanswered(ANSWER_TIMEOUT_NANOS)) {
+            CommandOutcome lost = new CommandOutcome();
+            lost.commandId = id;
+            lost.accepted = false;
+            lost.reason = "no outcome within " + TimeUnit.NANOSECONDS.toMillis(ANSWER_TIMEOUT_NANOS)
+                    + " ms of wall time (the node that owned the robot may have stopped)";
+            outcome(lost);
+        }
+    }
+
+    /** Wall time a command's outcome may take (the edge answers within its request timeout, 1 s by default). */
+    static final long ANSWER_TIMEOUT_NANOS = TimeUnit.SECONDS.toNanos(4);
+
     /** One look of the binding (its thread): the traffic planner plans and sends legs; figures logged now and then. */
     void trafficStep() {
         if (traffic == null) {

@@ -115,4 +115,23 @@ class RobotCommandsTest {
         commands.send(to(new PickCartCommand(), "robot1"), "lifting, again");
         assertThat(commands.pickUnseen("robot1", 2L)).isTrue();
     }
+
+    @Test
+    void aCommandWithoutOutcomeIsListedAsUnansweredUntilItsOutcomeComesThenTheNextGoesOut() {
+        CommandLedger ledger = new CommandLedger(bus, "u-");
+        RobotCommands queue = new RobotCommands(ledger);
+        GoToCommand lost = to(new GoToCommand(), "robot1");
+        GoToCommand next = to(new GoToCommand(), "robot1");
+        queue.send(lost, "to a node that died with it");
+        queue.send(next, "after it");
+
+        assertThat(ledger.unanswered(0)).containsExactly(lost.commandId);
+        assertThat(ledger.unanswered(java.util.concurrent.TimeUnit.HOURS.toNanos(1))).isEmpty();
+        CommandOutcome timedOut = new CommandOutcome();
+        timedOut.commandId = lost.commandId; // what RobotFleet.expireUnanswered makes of it
+        assertThat(queue.answered(timedOut)).isNotNull();
+        assertThat(bus.sent).containsExactly(lost, next);
+        assertThat(ledger.unanswered(0)).containsExactly(next.commandId);
+        assertThat(queue.answered(outcome(lost, true, null))).as("the real outcome, late").isNull();
+    }
 }
