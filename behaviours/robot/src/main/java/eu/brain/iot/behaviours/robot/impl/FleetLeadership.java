@@ -6,6 +6,7 @@ import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 
+import org.osgi.service.component.ComponentContext;
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
@@ -39,8 +40,15 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
 
     private static final System.Logger LOG = System.getLogger(FleetLeadership.class.getName());
 
+    /** The components that drive the fleet, enabled only while this instance leads. */
+    static final String[] DRIVING = { "eu.brain.iot.behaviours.robot.RobotSmartBehaviour",
+        RobotExterns.class.getName(), RobotBinding.class.getName() };
+
     private final EventBus bus;
     private final DeviceOwnership ownership;
+    private final ComponentContext components;
+    /** Whether the driving components are enabled; under the lock. */
+    private boolean driving = true;
     private final Leadership rule;
     private final ScheduledExecutorService beats = Executors.newSingleThreadScheduledExecutor(r -> {
         Thread t = new Thread(r, "robot-fleet-leadership");
@@ -52,12 +60,15 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
     private Leadership.Instance lastLeader;
 
     @Activate
-    public FleetLeadership(@Reference EventBus bus, @Reference DeviceOwnership ownership) {
+    public FleetLeadership(@Reference EventBus bus, @Reference DeviceOwnership ownership,
+            ComponentContext components) {
         this.bus = bus;
         this.ownership = ownership;
+        this.components = components;
         this.rule = new Leadership(new Leadership.Instance(ownership.nodeName(), UUID.randomUUID().toString(),
                 System.currentTimeMillis()), ALIVE_MILLIS, System.nanoTime());
         this.leads = wholeFleetHere();
+        drive(leads);
         beats.scheduleAtFixedRate(this::beat, 0, BEAT_MILLIS, TimeUnit.MILLISECONDS);
     }
 
@@ -111,6 +122,22 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
             lastLeader = leader;
         }
         leads = now;
+        drive(now);
+    }
+
+    /** Enables or disables the components that drive the fleet (SCR does it asynchronously). */
+    private synchronized void drive(boolean on) {
+        if (components == null || on == driving) {
+            return;
+        }
+        for (String name : DRIVING) {
+            if (on) {
+                components.enableComponent(name);
+            } else {
+                components.disableComponent(name);
+            }
+        }
+        driving = on;
     }
 
     private boolean wholeFleetHere() {
