@@ -43,8 +43,8 @@ class FabricWarehouseScenarioTest {
         PrintStream print = new PrintStream(out, true, StandardCharsets.UTF_8);
         int code = Main.run(args.toArray(String[]::new), print, print);
         String text = out.toString(StandardCharsets.UTF_8);
-        String diagnosis = text + "\n--- node1.log (tail) ---\n" + tail(run.resolve("node1/node.log"))
-                + "\n--- node2.log (tail) ---\n" + tail(run.resolve("node2/node.log"));
+        String diagnosis = text + "\n--- node1.log (tail) ---\n" + PaperWarehouseScenarioTest.tail(run.resolve("node1/node.log"))
+                + "\n--- node2.log (tail) ---\n" + PaperWarehouseScenarioTest.tail(run.resolve("node2/node.log"));
 
         assertThat(code).as(diagnosis).isZero();
         assertThat(text).as(diagnosis).contains("scenario PASSED", "fault: node2 killed (kill -9)",
@@ -69,14 +69,5 @@ class FabricWarehouseScenarioTest {
         assertThat(log1).as("node1's robot behaviour drives the fleet at the end")
                 .containsPattern("robot fleet: this instance \\(node node1\\) drives the fleet")
                 .contains("took [robot1, robot3]");
-    }
-
-    private static String tail(Path file) {
-        try {
-            List<String> lines = Files.readAllLines(file);
-            return String.join("\n", lines.subList(Math.max(0, lines.size() - 60), lines.size()));
-        } catch (Exception e) {
-            return "(no " + file + ": " + e.getMessage() + ")";
-        }
     }
 }

@@ -193,7 +193,8 @@ class PaperWarehouseScenarioTest {
         return ReportWriter.MAPPER.readTree(run.resolve("report.json").toFile());
     }
 
-    private static String tail(Path file) {
+    /** The last 60 lines of a log, for a failed assertion's message. */
+    static String tail(Path file) {
         try {
             List<String> lines = Files.readAllLines(file);
             return String.join("\n", lines.subList(Math.max(0, lines.size() - 60), lines.size()));
