@@ -181,7 +181,7 @@ final class Edge implements DeviceModel, AutoCloseable {
      */
     Optional<CompletableFuture<CommandOutcome>> execute(EdgeCommand command, boolean publishedHere) {
         String device = command.deviceId;
-        if (device == null || store.contains(device)) {
+        if (device != null && store.contains(device)) {
             return Optional.of(commands.run(command));
         }
         if (!publishedHere || remote.owner(device).isPresent()) {
@@ -189,10 +189,10 @@ final class Edge implements DeviceModel, AutoCloseable {
         }
         Optional<String> last = remote.lastOwner(device);
         if (last.isEmpty()) {
-            return Optional.of(commands.run(command)); // refused: no such device, saying which there are
+            return Optional.of(commands.run(command)); // refused: no device (id), saying which there are
         }
         return Optional.of(commands.refuse(command, "no node owns " + device + " now: node " + last.get()
-                + ", which owned it, has not reported it for " + freshMillis(api.settings())
+                + ", which owned it, has not reported it for over " + freshMillis(api.settings())
                 + " ms (a lease lapsing hands its devices to the other nodes); send the command again"));
     }
 

@@ -130,6 +130,7 @@ class SharedFleetTest {
         go.commandId = "c-2";
 
         assertThat(node2.execute(go, false)).isEmpty();
+        assertThat(node2.execute(new GoToCommand(), false)).as("no deviceId: refused on its publisher only").isEmpty();
         CommandOutcome unknown = node1.execute(go, true).orElseThrow().join();
         assertThat(unknown.accepted).isFalse();
         assertThat(unknown.reason).startsWith("unknown device 'robot7'");
