@@ -94,11 +94,6 @@ final class RemoteDevices {
         return skipped;
     }
 
-    /** Forgets a device this node owns now. */
-    void ownedHere(String id) {
-        devices.remove(id);
-    }
-
     /** @return the device as its owner last reported it, {@code STALE} when the report is older than allowed */
     Optional<ProviderSnapshot> snapshot(String id) {
         Entry e = id == null ? null : devices.get(id);
