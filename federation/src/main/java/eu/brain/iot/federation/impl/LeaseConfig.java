@@ -20,4 +20,10 @@ public @interface LeaseConfig {
 
     @AttributeDefinition(description = "How often a node renews its lease (ms); well under lease.ms")
     long renew_ms() default 500;
+
+    @AttributeDefinition(description = "How long a node that starts or comes back into its fabric leaves a device "
+            + "that no node has claimed yet (in no node's share, held by no node heard) to the node whose share holds "
+            + "it, so that nodes starting a few seconds apart each get their own share first (ms; at least lease.ms). "
+            + "A device of a node that died is taken at once")
+    long join_grace_ms() default 10000;
 }

@@ -51,6 +51,7 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
     /** Whether this node is in its fabric now (joined through its broker). */
     private final BooleanSupplier inFabric;
     private final long leaseMillis;
+    private final long joinGraceMillis;
     private final ScheduledExecutorService thread;
     private final String self;
 
@@ -72,15 +73,17 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         this(bus, ownership, () -> {
             FabricNode node = fabric.node();
             return node != null && node.joined();
-        }, config.lease_ms(), config.renew_ms());
+        }, config.lease_ms(), config.renew_ms(), config.join_grace_ms());
     }
 
     /** A lease manager whose node is in its fabric while {@code inFabric} says so. */
-    LeaseManager(EventBus bus, DeviceOwnership ownership, BooleanSupplier inFabric, long leaseMs, long renewMs) {
+    LeaseManager(EventBus bus, DeviceOwnership ownership, BooleanSupplier inFabric, long leaseMs, long renewMs,
+            long joinGraceMs) {
         this.bus = bus;
         this.ownership = ownership;
         this.inFabric = inFabric;
         this.leaseMillis = Math.max(100, leaseMs);
+        this.joinGraceMillis = Math.max(leaseMillis, joinGraceMs);
         long renew = Math.max(10, Math.min(renewMs, leaseMillis / 2));
         this.thread = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-leases"));
         if (ownership == null) {
@@ -124,9 +127,11 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
     /** Release every device and take nothing for one lease period: first hear who holds what. */
     private void startListening(String why) {
         Set<String> released = ownership.release(ownership.owned());
-        table = new LeaseTable(self, TimeUnit.MILLISECONDS.toNanos(leaseMillis), System.nanoTime());
+        table = new LeaseTable(self, TimeUnit.MILLISECONDS.toNanos(leaseMillis), System.nanoTime(),
+                TimeUnit.MILLISECONDS.toNanos(joinGraceMillis));
         LOG.log(System.Logger.Level.INFO, "Device leases of node {0}: {1}; released {2}, listening {3} ms before "
-                + "taking any device", self, why, released, leaseMillis);
+                + "taking any device, {4} ms before taking one nobody has claimed", self, why, released, leaseMillis,
+                joinGraceMillis);
     }
 
     private void safeTick() {

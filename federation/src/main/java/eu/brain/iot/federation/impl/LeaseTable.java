@@ -18,6 +18,11 @@ import java.util.TreeSet;
  * device, or its expiry, comes first, so that no device is commanded by two nodes at once;</li>
  * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
  * and started again finds its share held by others);</li>
+ * <li>a device no node has claimed since this node started (in no share and held by no node it heard, alive or
+ * lapsed) is taken only once this node has run for the join grace: the node whose share holds it has that long to
+ * join, so that a fabric whose nodes start a few seconds apart does not first hand every device to the node that
+ * came first (and its behaviours installed there, away from their devices). A device of a node heard that died is
+ * taken at once;</li>
  * <li>a node is alive while its last lease is younger than the lease period.</li>
  * </ul>
  * Time is {@link System#nanoTime()} as passed in. Threads: one owner thread (the lease manager's), no locking.
@@ -41,18 +46,30 @@ final class LeaseTable {
     private final String self;
     private final long leaseNanos;
     private final long startedNanos;
+    private final long joinGraceNanos;
     private final Map<String, Lease> heard = new TreeMap<>();
+    /** Every device a lease heard since this table started named in its share or as owned. */
+    private final Set<String> claimed = new TreeSet<>();
 
-    LeaseTable(String self, long leaseNanos, long startedNanos) {
+    /**
+     * @param leaseNanos     how long a lease holds; this node takes nothing for that long after it started
+     * @param startedNanos   when this node started (or came back into its fabric)
+     * @param joinGraceNanos how long after it started this node leaves a device no node has claimed to the node
+     *                       whose share holds it (at least one lease period)
+     */
+    LeaseTable(String self, long leaseNanos, long startedNanos, long joinGraceNanos) {
         this.self = self;
         this.leaseNanos = leaseNanos;
         this.startedNanos = startedNanos;
+        this.joinGraceNanos = Math.max(leaseNanos, joinGraceNanos);
     }
 
     /** Another node's lease; this node's own is ignored. */
     void heard(Lease lease) {
         if (!lease.node().equals(self)) {
             heard.put(lease.node(), lease);
+            claimed.addAll(lease.share());
+            claimed.addAll(lease.owned());
         }
     }
 
@@ -82,8 +99,10 @@ final class LeaseTable {
         }
         Set<String> take = new TreeSet<>();
         if (now - startedNanos > leaseNanos) {
+            boolean joinGraceOver = now - startedNanos > joinGraceNanos;
             for (String d : fleet) {
-                if (!owned.contains(d) && self.equals(owner(d, share, alive))
+                boolean mayTake = joinGraceOver || share.contains(d) || claimed.contains(d);
+                if (mayTake && !owned.contains(d) && self.equals(owner(d, share, alive))
                         && alive.stream().noneMatch(l -> l.owned().contains(d))) {
                     take.add(d);
                 }

@@ -121,7 +121,7 @@ class LeaseManagerTest {
     }
 
     LeaseManager start(Edge edge) {
-        LeaseManager m = new LeaseManager(bus, edge, edge.alive::get, LEASE_MS, RENEW_MS);
+        LeaseManager m = new LeaseManager(bus, edge, edge.alive::get, LEASE_MS, RENEW_MS, LEASE_MS);
         bus.addTypedBehaviour(m, null, DeviceLease.class.getName());
         managers.add(m);
         return m;

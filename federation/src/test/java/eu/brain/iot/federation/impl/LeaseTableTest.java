@@ -22,7 +22,7 @@ class LeaseTableTest {
 
     @Test
     void aNodeJustStartedTakesNothingForOneLeasePeriodThenItsShare() {
-        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        LeaseTable t = new LeaseTable("node1", LEASE, 0, LEASE);
         assertThat(t.plan(LEASE, FLEET, SHARE1, Set.of()).take()).as("still listening").isEmpty();
         t.heard(lease("node2", SHARE2, SHARE2, LEASE));
         LeaseTable.Plan plan = t.plan(LEASE + 1, FLEET, SHARE1, Set.of());
@@ -34,8 +34,8 @@ class LeaseTableTest {
     void theDevicesOfANodeWhoseLeaseLapsedGoToTheNodesAliveTheSameWayOnEach() {
         long now = 10 * LEASE;
         // three nodes; node3 shares nothing of the fleet here, node2 dies
-        LeaseTable at1 = new LeaseTable("node1", LEASE, 0);
-        LeaseTable at3 = new LeaseTable("node3", LEASE, 0);
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
+        LeaseTable at3 = new LeaseTable("node3", LEASE, 0, LEASE);
         at1.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
         at1.heard(lease("node3", Set.of(), Set.of(), now));
         at3.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
@@ -56,13 +56,13 @@ class LeaseTableTest {
     @Test
     void whileTheHoldersLeaseStillListsADeviceItIsNotTaken() {
         long now = 10 * LEASE;
-        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        LeaseTable t = new LeaseTable("node1", LEASE, 0, LEASE);
         // node2 holds node1's robot3 (taken while node1 was away) and has not let it go yet
         t.heard(lease("node2", SHARE2, Set.of("robot2", "robot4", "robot3"), now));
         LeaseTable.Plan plan = t.plan(now, FLEET, SHARE1, Set.of());
         assertThat(plan.take()).containsExactlyInAnyOrder("robot1", "door1");
 
-        LeaseTable at2 = new LeaseTable("node2", LEASE, 0);
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0, LEASE);
         at2.heard(lease("node1", SHARE1, Set.of("robot1", "door1"), now));
         assertThat(at2.plan(now, FLEET, SHARE2, Set.of("robot2", "robot4", "robot3")).release())
                 .as("robot3 belongs to node1, alive again").containsExactly("robot3");
@@ -74,11 +74,11 @@ class LeaseTableTest {
     @Test
     void twoNodesOwningOneDeviceLeaveItToTheLowerName() {
         long now = 10 * LEASE;
-        LeaseTable at2 = new LeaseTable("node2", LEASE, 0);
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0, LEASE);
         at2.heard(lease("node1", SHARE1, Set.of("robot1", "robot3", "door1", "robot4"), now));
         // robot4 is node2's share, but node1 holds it as well (both took it in one renewal)
         assertThat(at2.plan(now, FLEET, SHARE2, SHARE2).release()).containsExactly("robot4");
-        LeaseTable at1 = new LeaseTable("node1", LEASE, 0);
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
         at1.heard(lease("node2", SHARE2, SHARE2, now));
         assertThat(at1.plan(now, FLEET, SHARE1, Set.of("robot1", "robot3", "door1", "robot4")).release())
                 .as("and node1 lets it go to its sharer").containsExactly("robot4");
@@ -87,11 +87,38 @@ class LeaseTableTest {
     @Test
     void ownLeasesAreNotHeardAndANodeAloneOwnsTheWholeFleetOnceItsShareHoldersAreGone() {
         long now = 10 * LEASE;
-        LeaseTable t = new LeaseTable("node1", LEASE, 0);
+        LeaseTable t = new LeaseTable("node1", LEASE, 0, LEASE);
         t.heard(lease("node1", SHARE1, FLEET, now));
         assertThat(t.alive(now)).isEmpty();
         t.heard(lease("node2", SHARE2, SHARE2, 0));
         assertThat(t.plan(now, FLEET, SHARE1, SHARE1).take()).containsExactlyInAnyOrder("robot2", "robot4");
         assertThat(List.copyOf(t.lapsed(now))).containsExactly("node2");
+    }
+
+    @Test
+    void aDeviceNoNodeHasClaimedWaitsForTheJoinGraceSoThatItsNodeJoinsFirst() {
+        long grace = 5 * LEASE;
+        // node2 starts first: node1, whose share holds robot1, robot3 and door1, has not been heard yet
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0, grace);
+        assertThat(at2.plan(LEASE + 1, FLEET, SHARE2, Set.of()).take()).as("its own share after one lease period")
+                .containsExactlyInAnyOrderElementsOf(SHARE2);
+        assertThat(at2.plan(grace, FLEET, SHARE2, SHARE2).take()).as("no one else's during the grace").isEmpty();
+        assertThat(at2.plan(grace + 1, FLEET, SHARE2, SHARE2).take()).as("node1 never came")
+                .containsExactlyInAnyOrderElementsOf(SHARE1);
+
+        // node1 joins within the grace: node2 never takes its share
+        LeaseTable again = new LeaseTable("node2", LEASE, 0, grace);
+        again.heard(lease("node1", SHARE1, Set.of(), grace)); // alive, still listening
+        assertThat(again.plan(grace + 1, FLEET, SHARE2, SHARE2).take()).isEmpty();
+    }
+
+    @Test
+    void theDevicesOfANodeHeardThatDiedAreTakenAtOnceEvenWithinTheJoinGrace() {
+        long grace = 10 * LEASE;
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0, grace);
+        at2.heard(lease("node1", SHARE1, SHARE1, LEASE));
+        long now = 3 * LEASE + 1; // node1's lease lapsed, well within the grace
+        assertThat(at2.lapsed(now)).containsExactly("node1");
+        assertThat(at2.plan(now, FLEET, SHARE2, SHARE2).take()).containsExactlyInAnyOrderElementsOf(SHARE1);
     }
 }
