@@ -38,8 +38,14 @@ abstract class Broker implements AutoCloseable {
         }
     }
 
+    /**
+     * @param dir the broker's folder (Mosquitto's); the embedded broker's is a new one under {@code target/} (see
+     *            {@link HiveMq#close})
+     */
     static Broker of(Kind kind, Path dir) throws Exception {
-        Broker b = kind == Kind.MOSQUITTO ? new Mosquitto(dir) : new HiveMq(dir);
+        Broker b = kind == Kind.MOSQUITTO ? new Mosquitto(dir)
+                : new HiveMq(Files.createTempDirectory(Files.createDirectories(Path.of("target", "test-brokers")),
+                        "hivemq-"));
         b.start();
         return b;
     }
@@ -57,6 +63,7 @@ abstract class Broker implements AutoCloseable {
         start();
     }
 
+    /** Stops the broker at the end of a test (the embedded one in the background: see {@link HiveMq#close}). */
     @Override
     public void close() throws Exception {
         stop();
@@ -124,6 +131,23 @@ abstract class Broker implements AutoCloseable {
             if (broker != null) {
                 broker.close();
                 broker = null;
+            }
+        }
+
+        /**
+         * At a test's end the broker stops on a thread of its own: HiveMQ's event loops each wait Netty's quiet
+         * period (2 s) in turn, 4 s that no test needs to wait for (the next test's broker has a port and a folder of
+         * its own; {@link #restart} still waits). Its folder is outside the test's temporary folder, which JUnit
+         * deletes while the broker may still be stopping.
+         */
+        @Override
+        public void close() {
+            EmbeddedBroker stopping = broker;
+            broker = null;
+            if (stopping != null) {
+                Thread t = new Thread(stopping::close, "test-broker-stop-" + port);
+                t.setDaemon(true);
+                t.start();
             }
         }
     }
