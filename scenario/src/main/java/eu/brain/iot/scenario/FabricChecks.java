@@ -7,8 +7,9 @@ import java.util.ArrayList;
 import java.util.List;
 
 /**
- * The checks a run on a fabric of several nodes adds to the judge's: did every node join the fabric, and did every
- * node the run did not kill run until the end. Stateless.
+ * The checks a run on a fabric of several nodes adds to the judge's: did every node join the fabric, did every
+ * node the run did not kill run until the end, and did a node started again get a share of the fleet back.
+ * Stateless.
  */
 final class FabricChecks {
     private static final Duration SHELL_TIMEOUT = Duration.ofSeconds(20);
@@ -57,5 +58,31 @@ final class FabricChecks {
                 ? nodes.members().size() - killed.size() + " of " + nodes.members().size() + " nodes running"
                         + (killed.isEmpty() ? "" : ", " + String.join(", ", killed) + " killed by the run")
                 : String.join("; ", ended));
+    }
+
+    /**
+     * Every node the run started again after killing it owns devices again at the end (it rejoined, listened, and
+     * the nodes that held its share gave it back); null when no node was started again.
+     */
+    static Verdict.Check restartedTookAShare(NodeGroup nodes) {
+        List<String> back = new ArrayList<>();
+        List<String> not = new ArrayList<>();
+        for (NodeGroup.Member m : nodes.members()) {
+            if (!m.restarted()) {
+                continue;
+            }
+            List<String> owned = m.owned();
+            if (owned != null && !owned.isEmpty()) {
+                back.add(m.spec.name() + " owns " + String.join(", ", owned));
+            } else {
+                not.add(m.spec.name() + (owned == null ? ": unknown (its REST API did not answer; its log: "
+                        + m.node.log() + ")" : ": owns nothing (its log: " + m.node.log() + ")"));
+            }
+        }
+        if (back.isEmpty() && not.isEmpty()) {
+            return null;
+        }
+        return new Verdict.Check("every node started again got a share of the fleet back", not.isEmpty(),
+                not.isEmpty() ? String.join("; ", back) : String.join("; ", not));
     }
 }

@@ -189,6 +189,11 @@ final class FabricNode implements AutoCloseable {
     }
 
     /** CPU time the node's JVM has used so far (all its threads), or zero when the system does not say. */
+    /** Every bundle is active: its shell answers at once. */
+    boolean up() {
+        return ready.isDone() && ready.getNow("") == null;
+    }
+
     Duration cpu() {
         return process.toHandle().info().totalCpuDuration().orElse(Duration.ZERO);
     }

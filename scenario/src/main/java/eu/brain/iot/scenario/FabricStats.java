@@ -25,6 +25,18 @@ record FabricStats(Map<String, Long> sentTo, Map<String, Long> receivedFrom) {
         receivedFrom = Collections.unmodifiableMap(new TreeMap<>(receivedFrom));
     }
 
+    /** These figures and another's added up, node by node (the other may be null). */
+    FabricStats plus(FabricStats other) {
+        if (other == null) {
+            return this;
+        }
+        Map<String, Long> sent = new TreeMap<>(sentTo);
+        other.sentTo.forEach((node, n) -> sent.merge(node, n, Long::sum));
+        Map<String, Long> received = new TreeMap<>(receivedFrom);
+        other.receivedFrom.forEach((node, n) -> received.merge(node, n, Long::sum));
+        return new FabricStats(sent, received);
+    }
+
     /**
      * @param lines the command's output
      * @return the counts, or null when the output has no table (the node is not in a fabric: the command says why)

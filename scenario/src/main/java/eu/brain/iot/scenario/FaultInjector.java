@@ -65,7 +65,7 @@ final class FaultInjector {
     List<String> clear() {
         List<String> notDone = new ArrayList<>();
         for (Pending p : pending) {
-            if (!p.start()) {
+            if (!p.start() && p.fault().endsWithTheRun()) {
                 p.fault().inject(this, false);
             } else {
                 notDone.add(p.fault().describe());
@@ -104,6 +104,15 @@ final class FaultInjector {
         } catch (InterruptedException e) {
             Thread.currentThread().interrupt();
             return "interrupted while stopping " + name;
+        }
+    }
+
+    /** Starts a node killed earlier again ({@link NodeGroup#restart}). */
+    String restartNode(PlannedFault.KillNode kill) {
+        try {
+            return nodes.restart(kill.node(), nowMillis);
+        } catch (java.io.IOException e) {
+            return "could not start " + kill.node() + " again: " + e.getMessage();
         }
     }
 

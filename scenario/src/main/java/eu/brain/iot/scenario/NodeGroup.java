@@ -23,40 +23,67 @@ final class NodeGroup {
     static final Duration READING_EVERY = Duration.ofSeconds(5);
     /** A reading during the run waits this long for a node's shell; a busy node is read again later. */
     private static final Duration READING_SHELL_TIMEOUT = Duration.ofSeconds(5);
+    /** How often the end of a run looks whether a node started again owns devices (wall ms). */
+    private static final long RESTART_LOOK_MS = 200;
     private static final Duration SHELL_TIMEOUT = Duration.ofSeconds(20);
 
     /** One node and what is known of it. Confined to the runner's thread. */
     static final class Member {
         final NodeSpec spec;
-        final FabricNode node;
+        /** Its JVM: a new one once it is started again after a kill. */
+        FabricNode node;
         final EdgeProbe probe;
+        private final java.nio.file.Path configDir;
         private Duration cpu0 = Duration.ZERO;
         private Duration cpuLast;
+        /** CPU time and fabric figures of its earlier lives (before a kill), added to the current one's. */
+        private Duration cpuEarlier = Duration.ZERO;
+        private FabricStats statsEarlier;
         private long endNanos = -1;
         private Long killedAtMs;
+        private Long restartedAtMs;
         private boolean endTold;
         private FabricStats stats;
         private List<String> owned;
         private List<String> behaviours;
 
-        private Member(NodeSpec spec, FabricNode node) {
+        private Member(NodeSpec spec, FabricNode node, java.nio.file.Path configDir) {
             this.spec = spec;
             this.node = node;
+            this.configDir = configDir;
             this.probe = new EdgeProbe(spec.httpPort());
         }
 
+        /** Killed by the run and not started again. */
         boolean killed() {
-            return killedAtMs != null;
+            return killedAtMs != null && restartedAtMs == null;
+        }
+
+        /** Started again after the run killed it. */
+        boolean restarted() {
+            return restartedAtMs != null;
+        }
+
+        /** The devices its edge owned at the last reading, or null when unknown. */
+        List<String> owned() {
+            return owned;
+        }
+
+        private Duration cpuThisLife() {
+            return cpuLast == null ? Duration.ZERO : cpuLast.minus(cpu0);
         }
     }
 
+    /** The repository root the nodes run from. */
+    private final java.nio.file.Path root;
     private final List<Member> members;
     private final BrokerProcess broker;
     private final NodeSetup.Join join;
     private long startNanos;
     private long nextReadingNanos;
 
-    private NodeGroup(List<Member> members, BrokerProcess broker, NodeSetup.Join join) {
+    private NodeGroup(java.nio.file.Path root, List<Member> members, BrokerProcess broker, NodeSetup.Join join) {
+        this.root = root;
         this.members = List.copyOf(members);
         this.broker = broker;
         this.join = join;
@@ -88,17 +115,17 @@ final class NodeGroup {
                 Files.createDirectories(spec.folder());
                 java.nio.file.Path configDir = NodeSetup.write(o, fleet, spec, join);
                 FabricNode node = FabricNode.start(o.root(), configDir, spec.httpPort(), spec.log(), spec.name());
-                members.add(new Member(spec, node));
+                members.add(new Member(spec, node, configDir));
                 out.printf("%s: pid %d, REST API http://127.0.0.1:%d/sensinact, config %s, log %s%s%n", spec.label(),
                         node.pid(), spec.httpPort(), configDir, node.log(),
                         spec.shared() ? ", share " + spec.number() + "/" + spec.of()
                                 + (spec.number() == NodeSetup.DOORS_OWNER ? " and the doors" : "") : "");
             }
         } catch (IOException | RuntimeException e) {
-            new NodeGroup(members, broker, join).stop();
+            new NodeGroup(o.root(), members, broker, join).stop();
             throw e;
         }
-        return new NodeGroup(members, broker, join);
+        return new NodeGroup(o.root(), members, broker, join);
     }
 
     /** Several nodes sharing the fleet (else one node alone). */
@@ -172,7 +199,7 @@ final class NodeGroup {
         if (nowNanos >= nextReadingNanos) {
             nextReadingNanos = nowNanos + READING_EVERY.toNanos();
             for (Member m : members) {
-                if (m.node.alive()) {
+                if (m.node.alive() && m.node.up()) { // a node started again answers once it is up
                     readCpu(m);
                     readStats(m, READING_SHELL_TIMEOUT);
                 }
@@ -201,6 +228,31 @@ final class NodeGroup {
         return name + " killed (kill -9)";
     }
 
+    /**
+     * Starts a node the run killed again, with its configuration and state folder (its output in
+     * {@code node-restarted.log} beside the first): it rejoins its fabric, listens for a lease period and gets its
+     * share back. Its CPU and fabric figures add up over both lives.
+     *
+     * @return what was done, for the fault log
+     */
+    String restart(String name, long warehouseMs) throws IOException {
+        Member m = members.stream().filter(x -> name.equals(x.spec.name())).findFirst().orElse(null);
+        if (m == null || m.killedAtMs == null || m.node.alive()) {
+            return name + " was not killed by the run: not started again";
+        }
+        m.cpuEarlier = m.cpuEarlier.plus(m.cpuThisLife());
+        m.statsEarlier = m.statsEarlier == null ? m.stats : m.statsEarlier.plus(m.stats);
+        m.stats = null;
+        java.nio.file.Path log = m.spec.folder().resolve("node-restarted.log");
+        m.node = FabricNode.start(root, m.configDir, m.spec.httpPort(), log, m.spec.name());
+        m.cpu0 = Duration.ZERO;
+        m.cpuLast = null;
+        m.endNanos = -1;
+        m.endTold = false;
+        m.restartedAtMs = warehouseMs;
+        return name + " started again (pid " + m.node.pid() + ", log " + log + ")";
+    }
+
     /** The run ended now: every live node's CPU until then. */
     void endRun(long nowNanos) {
         for (Member m : members) {
@@ -215,7 +267,31 @@ final class NodeGroup {
 
     /** Every live node's CPU time during the run, summed (a node that ended: until its last reading). */
     long cpuMs() {
-        return members.stream().mapToLong(m -> m.cpuLast == null ? 0 : m.cpuLast.minus(m.cpu0).toMillis()).sum();
+        return members.stream().mapToLong(m -> m.cpuEarlier.plus(m.cpuThisLife()).toMillis()).sum();
+    }
+
+    /**
+     * Waits, up to {@code timeout}, until every node started again and alive has taken devices, as its lease
+     * manager logs it ({@code Device leases of node NODE: took [...]}): a node started late in the run takes its
+     * share back after the warehouse is done (its start, then a lease period of listening), and its figures are read
+     * then. Its edge's device list alone does not say it: right after the start it shows the fleet before the
+     * other nodes' reports name their devices' owners.
+     */
+    void awaitRestartedOwning(Duration timeout) throws InterruptedException {
+        long until = System.nanoTime() + timeout.toNanos();
+        for (Member m : members) {
+            String took = "Device leases of node " + m.spec.name() + ": took [";
+            while (m.restarted() && m.node.alive() && System.nanoTime() < until) {
+                try {
+                    if (Files.readString(m.node.log()).contains(took)) {
+                        break;
+                    }
+                } catch (IOException e) {
+                    // not written yet
+                }
+                Thread.sleep(RESTART_LOOK_MS);
+            }
+        }
     }
 
     /** With several nodes: every live node's last figures (its shell and its REST API), at the end of the run. */
@@ -234,11 +310,12 @@ final class NodeGroup {
     List<NodeReport> reports() {
         List<NodeReport> reports = new ArrayList<>();
         for (Member m : members) {
-            Long cpu = m.cpuLast == null ? null : m.cpuLast.minus(m.cpu0).toMillis();
+            Long cpu = m.cpuLast == null && m.cpuEarlier.isZero() ? null
+                    : m.cpuEarlier.plus(m.cpuThisLife()).toMillis();
             long wallMs = m.endNanos < 0 ? 0 : Math.max(0, (m.endNanos - startNanos) / 1_000_000);
-            reports.add(new NodeReport(m.spec.name(), m.killedAtMs, m.owned, m.behaviours,
-                    m.stats == null ? null : m.stats.sentTo(), m.stats == null ? null : m.stats.receivedFrom(), cpu,
-                    wallMs));
+            FabricStats stats = m.statsEarlier == null ? m.stats : m.statsEarlier.plus(m.stats);
+            reports.add(new NodeReport(m.spec.name(), m.killedAtMs, m.restartedAtMs, m.owned, m.behaviours,
+                    stats == null ? null : stats.sentTo(), stats == null ? null : stats.receivedFrom(), cpu, wallMs));
         }
         return reports;
     }

@@ -94,8 +94,9 @@ final class OptionsParser {
         "(1.." + Options.MAX_NODES + ", default 1: one node alone); with 2 or more the run starts the embedded",
         "broker unless --broker is given"})
     private String nodes;
-    @Option(names = "--kill-node", paramLabel = "NODE@T", order = 15, description = {
-        "kill node NODE's JVM outright (kill -9) at warehouse time T, e.g. node2@20s",
+    @Option(names = "--kill-node", paramLabel = "NODE@T[+D]", order = 15, description = {
+        "kill node NODE's JVM outright (kill -9) at warehouse time T, e.g. node2@20s;",
+        "with +D, start it again D later (node2@20s+30s): it rejoins and gets its share back",
         "(repeatable; needs --nodes 2 or more)"})
     private List<String> killNode = new ArrayList<>();
     @Option(names = "--broker", paramLabel = "URI", order = 15, description = {

@@ -12,6 +12,14 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
     /** When the fault ends by itself (a robot back online), or {@link #atMillis()} when it does not. */
     long endsAtMillis();
 
+    /**
+     * Whether a fault still going on when the run ends is ended then (a robot offline comes back, so that the end
+     * state is judged fairly), rather than reported as not done (a node due to be started again).
+     */
+    default boolean endsWithTheRun() {
+        return true;
+    }
+
     /** @throws IllegalArgumentException when the fault names a robot the warehouse does not have */
     default void check(java.util.List<String> robotIds) {
     }
@@ -139,18 +147,23 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
 
     /**
      * A fabric node's JVM killed outright at {@code atMillis} (SIGKILL, as {@code kill -9}: no goodbye to the fabric,
-     * no lease given back); the other nodes are expected to take its devices when its lease lapses.
+     * no lease given back); the other nodes are expected to take its devices when its lease lapses. With a downtime,
+     * the node is started again that long after (its own configuration and state folder): it rejoins its fabric and
+     * gets its share back from the nodes that held it.
      *
-     * @param node the node's name, {@code node1}..{@code nodeN}
+     * @param node       the node's name, {@code node1}..{@code nodeN}
+     * @param downMillis how long after the kill it is started again; {@link #NOT_RESTARTED} for never
      */
-    record KillNode(String node, long atMillis) implements PlannedFault {
-        private static final String HOW = "write NODE@TIME, e.g. node2@20s (node2 killed with kill -9 20 s of "
-                + "warehouse time into the scenario)";
+    record KillNode(String node, long atMillis, long downMillis) implements PlannedFault {
+        /** The downtime of a node that stays dead. */
+        static final long NOT_RESTARTED = -1;
+        private static final String HOW = "write NODE@TIME or NODE@TIME+DOWNTIME, e.g. node2@20s (node2 killed with "
+                + "kill -9 20 s of warehouse time into the scenario) or node2@20s+30s (and started again 30 s later)";
 
-        /** {@code node2@20s}; whether the node is one of the run's is checked by {@link #checkNodes}. */
+        /** {@code node2@20s} or {@code node2@20s+30s}; whether the node is one of the run's is checked by {@link #checkNodes}. */
         static KillNode parse(String spec) {
             String prefix = "--kill-node '" + spec + "': ";
-            int at = spec.lastIndexOf('@');
+            int at = spec.indexOf('@');
             if (at < 0) {
                 throw new IllegalArgumentException(prefix + HOW + "; the @TIME is missing");
             }
@@ -158,7 +171,21 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
             if (node.isEmpty()) {
                 throw new IllegalArgumentException(prefix + HOW + "; the NODE before '@' is missing");
             }
-            return new KillNode(node, PlannedFault.part(prefix, "TIME", spec.substring(at + 1)));
+            int plus = spec.indexOf('+', at);
+            long atMillis = PlannedFault.part(prefix, "TIME", plus < 0 ? spec.substring(at + 1)
+                    : spec.substring(at + 1, plus));
+            if (plus < 0) {
+                return new KillNode(node, atMillis, NOT_RESTARTED);
+            }
+            long down = PlannedFault.part(prefix, "DOWNTIME", spec.substring(plus + 1));
+            if (down <= 0) {
+                throw new IllegalArgumentException(prefix + "the DOWNTIME must be above 0");
+            }
+            return new KillNode(node, atMillis, down);
+        }
+
+        boolean restarted() {
+            return downMillis > 0;
         }
 
         /**
@@ -181,17 +208,23 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
 
         @Override
         public long endsAtMillis() {
-            return atMillis;
+            return restarted() ? atMillis + downMillis : atMillis;
+        }
+
+        @Override
+        public boolean endsWithTheRun() {
+            return false;
         }
 
         @Override
         public String inject(FaultInjector injector, boolean start) {
-            return injector.killNode(this);
+            return start ? injector.killNode(this) : injector.restartNode(this);
         }
 
         @Override
         public String describe() {
-            return node + " killed (kill -9) at " + WarehouseTime.format(atMillis);
+            return node + " killed (kill -9) at " + WarehouseTime.format(atMillis)
+                    + (restarted() ? " and started again " + WarehouseTime.format(downMillis) + " later" : "");
         }
     }
 }

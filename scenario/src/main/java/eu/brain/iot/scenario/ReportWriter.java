@@ -92,16 +92,21 @@ final class ReportWriter {
         return r;
     }
 
+    private static void seconds(ObjectNode o, String field, Long ms) {
+        if (ms == null) {
+            o.putNull(field);
+        } else {
+            o.put(field, ms / 1000.0);
+        }
+    }
+
     /** The per-node section of a run on several nodes: each node as last read (null where unknown). */
     static void nodes(ArrayNode array, List<NodeReport> nodes) {
         for (NodeReport n : nodes) {
             ObjectNode o = array.addObject();
             o.put("name", n.name());
-            if (n.killedAtWarehouseMs() == null) {
-                o.putNull("killedAtWarehouseSeconds");
-            } else {
-                o.put("killedAtWarehouseSeconds", n.killedAtWarehouseMs() / 1000.0);
-            }
+            seconds(o, "killedAtWarehouseSeconds", n.killedAtWarehouseMs());
+            seconds(o, "restartedAtWarehouseSeconds", n.restartedAtWarehouseMs());
             strings(o, "devicesOwned", n.devicesOwned());
             strings(o, "behavioursInstalled", n.behavioursInstalled());
             counts(o, "eventsSentTo", n.eventsSentTo());

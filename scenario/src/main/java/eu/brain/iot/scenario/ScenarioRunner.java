@@ -29,6 +29,8 @@ final class ScenarioRunner {
     private static final long LOOK_EVERY_MS = 100;
     /** How long the bus counters may take to show an outcome for every command published before the run ended. */
     private static final Duration BUS_SETTLE = Duration.ofSeconds(5);
+    /** How long the end of a run waits for a node started again to own its share (its start and a lease period). */
+    private static final Duration RESTARTED_SETTLE = Duration.ofSeconds(30);
 
     private final Options options;
     private final List<String> arguments;
@@ -218,9 +220,14 @@ final class ScenarioRunner {
                 }
                 extra.addAll(behavioursBack(faults));
             }
+            nodes.awaitRestartedOwning(RESTARTED_SETTLE);
             nodes.finalReadings();
             extra.add(FabricChecks.joined(nodes));
             extra.add(FabricChecks.ranUntilTheEnd(nodes));
+            Verdict.Check back = FabricChecks.restartedTookAShare(nodes);
+            if (back != null) {
+                extra.add(back);
+            }
         } else if (node.alive()) {
             try {
                 bus = settledBusStats(List.of(node));

@@ -29,6 +29,9 @@ final class Summary {
         if (n.killedAtWarehouseMs() != null) {
             line.append(" killed at ").append(WarehouseTime.format(n.killedAtWarehouseMs()));
         }
+        if (n.restartedAtWarehouseMs() != null) {
+            line.append(", started again at ").append(WarehouseTime.format(n.restartedAtWarehouseMs()));
+        }
         line.append(": owns ").append(n.devicesOwned() == null ? "?" : n.devicesOwned().isEmpty() ? "nothing"
                 : String.join(", ", n.devicesOwned()));
         line.append("; behaviours ").append(n.behavioursInstalled() == null ? "?"

@@ -48,4 +48,15 @@ class FabricStatsTest {
                 + "eu.brain.iot.federation (broker.uri, fabric.name, key.file; see federation/README.md)."))).isNull();
         assertThat(FabricStats.parse(List.of())).isNull();
     }
+
+    @Test
+    void twoLivesOfANodeAddUpNodeByNode() {
+        FabricStats first = new FabricStats(java.util.Map.of("node1", 100L), java.util.Map.of("node1", 80L));
+        FabricStats second = new FabricStats(java.util.Map.of("node1", 10L, "node3", 5L), java.util.Map.of());
+        FabricStats both = first.plus(second);
+        assertThat(both.sentTo()).containsExactlyEntriesOf(new java.util.TreeMap<>(java.util.Map.of("node1", 110L,
+                "node3", 5L)));
+        assertThat(both.receivedFrom()).containsEntry("node1", 80L).hasSize(1);
+        assertThat(first.plus(null)).isSameAs(first);
+    }
 }

@@ -10,12 +10,15 @@ import org.junit.jupiter.api.Test;
 
 /** The report's per-node section and the summary's line per node. */
 class NodeReportTest {
-    private static final NodeReport LIVE = new NodeReport("node1", null, List.of("door1", "robot1", "robot3"),
+    private static final NodeReport LIVE = new NodeReport("node1", null, null, List.of("door1", "robot1", "robot3"),
             List.of("eu.brain.iot.behaviours.door", "eu.brain.iot.behaviours.robot"), Map.of("node2", 120L),
             Map.of("node2", 80L), 6_000L, 20_000);
-    private static final NodeReport KILLED = new NodeReport("node2", 20_000L, List.of("robot2"), List.of(),
+    private static final NodeReport KILLED = new NodeReport("node2", 20_000L, null, List.of("robot2"), List.of(),
             Map.of("node1", 80L), Map.of("node1", 120L), 1_500L, 5_000);
-    private static final NodeReport UNKNOWN = new NodeReport("node3", null, null, null, null, null, null, 20_000);
+    private static final NodeReport UNKNOWN = new NodeReport("node3", null, null, null, null, null, null, null, 20_000);
+
+    private static final NodeReport RESTARTED = new NodeReport("node2", 20_000L, 50_000L, List.of("robot2"),
+            List.of(), Map.of("node1", 80L), Map.of("node1", 120L), 1_500L, 5_000);
 
     private static ArrayNode section(NodeReport... nodes) {
         ArrayNode array = ReportWriter.MAPPER.createArrayNode();
@@ -47,9 +50,18 @@ class NodeReportTest {
     }
 
     @Test
+    void aNodeStartedAgainHasBothTimes() {
+        JsonNode n = section(RESTARTED).get(0);
+        assertThat(n.path("killedAtWarehouseSeconds").asDouble()).isEqualTo(20.0);
+        assertThat(n.path("restartedAtWarehouseSeconds").asDouble()).isEqualTo(50.0);
+        assertThat(Summary.nodeLine(RESTARTED)).startsWith("node2 killed at 20.0 s, started again at 50.0 s: owns "
+                + "robot2;");
+    }
+
+    @Test
     void unknownFiguresAreNull() {
         JsonNode n = section(UNKNOWN).get(0);
-        for (String field : List.of("killedAtWarehouseSeconds", "devicesOwned", "behavioursInstalled", "eventsSentTo",
+        for (String field : List.of("killedAtWarehouseSeconds", "restartedAtWarehouseSeconds", "devicesOwned", "behavioursInstalled", "eventsSentTo",
                 "eventsReceivedFrom", "cpuSeconds", "cpuPercentOfOneCore")) {
             assertThat(n.has(field)).as(field).isTrue();
             assertThat(n.get(field).isNull()).as(field).isTrue();

@@ -61,10 +61,24 @@ class NodesOptionsTest {
     @Test
     void killNodeIsReadWithItsWarehouseTime() throws Exception {
         Options o = OptionsParser.parse("--nodes", "3", "--kill-node", "node2@20s", "--kill-node", "node3@1.5min");
-        assertThat(o.faults()).containsExactly(new PlannedFault.KillNode("node2", 20_000),
-                new PlannedFault.KillNode("node3", 90_000));
+        assertThat(o.faults()).containsExactly(new PlannedFault.KillNode("node2", 20_000, -1),
+                new PlannedFault.KillNode("node3", 90_000, -1));
         assertThat(o.faults().get(0).describe()).isEqualTo("node2 killed (kill -9) at 20.0 s");
         assertThat(o.faults().get(0).endsAtMillis()).as("nothing to end").isEqualTo(20_000);
+    }
+
+    @Test
+    void killNodeWithADowntimeStartsItAgainThatLongAfter() throws Exception {
+        Options o = OptionsParser.parse("--nodes", "2", "--kill-node", "node2@20s+30s");
+        PlannedFault f = o.faults().get(0);
+        assertThat(f).isEqualTo(new PlannedFault.KillNode("node2", 20_000, 30_000));
+        assertThat(f.describe()).isEqualTo("node2 killed (kill -9) at 20.0 s and started again 30.0 s later");
+        assertThat(f.endsAtMillis()).as("started again then").isEqualTo(50_000);
+        assertThat(f.endsWithTheRun()).as("not started after the run: reported as not done").isFalse();
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node2@20s+0s"))
+                .hasMessage("--kill-node 'node2@20s+0s': the DOWNTIME must be above 0");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node2@20s+later"))
+                .hasMessageStartingWith("--kill-node 'node2@20s+later': the DOWNTIME 'later' is not a duration");
     }
 
     @Test
@@ -89,8 +103,9 @@ class NodesOptionsTest {
     @Test
     void aKillNodeMistakeNamesThePartThatIsWrong() {
         assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node2"))
-                .hasMessage("--kill-node 'node2': write NODE@TIME, e.g. node2@20s (node2 killed with kill -9 20 s of "
-                        + "warehouse time into the scenario); the @TIME is missing");
+                .hasMessage("--kill-node 'node2': write NODE@TIME or NODE@TIME+DOWNTIME, e.g. node2@20s (node2 killed "
+                        + "with kill -9 20 s of warehouse time into the scenario) or node2@20s+30s (and started again "
+                        + "30 s later); the @TIME is missing");
         assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "@20s"))
                 .hasMessageEndingWith("the NODE before '@' is missing");
         assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node2@soon"))

@@ -7,6 +7,7 @@ import java.time.format.DateTimeFormatter;
 import java.util.ArrayList;
 import java.util.Collections;
 import java.util.Enumeration;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Set;
 
@@ -34,9 +35,11 @@ import org.osgi.service.log.LogReaderService;
  * framework's own bookkeeping below WARN (the log service records every bundle and service event at INFO or DEBUG
  * under the logger names {@code Events.*}: hundreds of lines at each start, still there for {@code log info}).
  * <p>
- * Ownership: the log service calls {@link #logged} on its own listener thread; {@link #activate} runs on SCR's. Both
- * print under {@link #lock}, which also guards {@link #printedUpTo}, so that an entry of the history read at
- * activation is not printed again by the listener, and lines never interleave.
+ * Ownership: the log service calls {@link #logged} on its own listener thread; the constructor runs on SCR's. Both
+ * print under {@link #lock}, which also guards {@link #printedAtStart}, so that an entry of the history read at
+ * activation is not printed again by the listener, and lines never interleave. The listener may get entries out of
+ * their sequence (two threads logging at once), so an entry is recognised by its own sequence number, not compared
+ * with the last one printed.
  */
 @Component
 public final class ConsoleLog {
@@ -56,7 +59,8 @@ public final class ConsoleLog {
     private final Object lock = new Object();
     /** Not a service (SCR would register it as one, and make the component wait for a user): a listener only. */
     private final LogListener listener = this::logged;
-    private long printedUpTo = -1;
+    /** Sequence numbers of the history entries printed at activation that the listener has not delivered yet. */
+    private final Set<Long> printedAtStart = new HashSet<>();
 
     @Activate
     public ConsoleLog(@Reference LogReaderService reader) {
@@ -74,7 +78,10 @@ public final class ConsoleLog {
                 history.add(e.nextElement());
             }
             Collections.reverse(history);
-            history.forEach(this::print);
+            for (LogEntry entry : history) {
+                printedAtStart.add(entry.getSequence());
+                print(entry);
+            }
         }
     }
 
@@ -85,16 +92,14 @@ public final class ConsoleLog {
 
     private void logged(LogEntry entry) {
         synchronized (lock) {
-            print(entry);
+            if (!printedAtStart.remove(entry.getSequence())) {
+                print(entry);
+            }
         }
     }
 
     /** Called under {@link #lock}. */
     private void print(LogEntry entry) {
-        if (entry.getSequence() <= printedUpTo) {
-            return;
-        }
-        printedUpTo = entry.getSequence();
         String line = format(entry);
         if (line != null) {
             out.println(line);
