@@ -13,7 +13,8 @@ import java.util.TreeSet;
  * <ul>
  * <li>a device belongs to the alive node whose share holds it (the lowest name if several), else to the alive node
  * at {@code floorMod(id.hashCode(), alive)} in name order (this node counting as alive);</li>
- * <li>a node releases a device that belongs to another node, or that an alive node of a lower name also owns;</li>
+ * <li>a node releases a device that belongs to another node once that node no longer listens (below: until then
+ * the device keeps an owner), and a device that an alive node of a lower name also owns;</li>
  * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
  * device, or its expiry, comes first, so that no device is commanded by two nodes at once;</li>
  * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
@@ -30,7 +31,13 @@ import java.util.TreeSet;
 final class LeaseTable {
 
     /** A node's lease as heard: its share, what it owns, when it was heard and for how long it holds. */
-    record Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos) {
+    record Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos,
+            boolean listening) {
+        /** The lease of a node that no longer listens. */
+        Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos) {
+            this(node, share, owned, heardNanos, leaseNanos, false);
+        }
+
         boolean alive(long now) {
             return now - heardNanos <= leaseNanos;
         }
@@ -93,12 +100,14 @@ final class LeaseTable {
         Set<String> release = new TreeSet<>();
         for (String d : owned) {
             boolean lowerHolds = alive.stream().anyMatch(l -> l.node().compareTo(self) < 0 && l.owned().contains(d));
-            if (lowerHolds || !self.equals(owner(d, share, alive))) {
+            String owner = owner(d, share, alive);
+            boolean ownerReady = alive.stream().noneMatch(l -> l.node().equals(owner) && l.listening());
+            if (lowerHolds || !self.equals(owner) && ownerReady) {
                 release.add(d);
             }
         }
         Set<String> take = new TreeSet<>();
-        if (now - startedNanos > leaseNanos) {
+        if (!listening(now)) {
             boolean joinGraceOver = now - startedNanos > joinGraceNanos;
             for (String d : fleet) {
                 boolean mayTake = joinGraceOver || share.contains(d) || claimed.contains(d);
@@ -109,6 +118,11 @@ final class LeaseTable {
             }
         }
         return new Plan(take, release);
+    }
+
+    /** Whether this node still listens: it takes nothing yet (its leases say so). */
+    boolean listening(long now) {
+        return now - startedNanos <= leaseNanos;
     }
 
     /** The node a device belongs to now. */

@@ -121,4 +121,19 @@ class LeaseTableTest {
         assertThat(at2.lapsed(now)).containsExactly("node1");
         assertThat(at2.plan(now, FLEET, SHARE2, SHARE2).take()).containsExactlyInAnyOrderElementsOf(SHARE1);
     }
+
+    @Test
+    void theHolderOfAReturningNodesShareKeepsItUntilThatNodeNoLongerListens() {
+        long now = 10 * LEASE;
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
+        Set<String> held = Set.of("robot1", "robot3", "door1", "robot2", "robot4"); // node2's share taken when it died
+        at1.heard(new LeaseTable.Lease("node2", SHARE2, Set.of(), now, LEASE, true)); // node2 back, listening
+        assertThat(at1.plan(now, FLEET, SHARE1, held).release()).as("no owner meanwhile otherwise").isEmpty();
+        at1.heard(new LeaseTable.Lease("node2", SHARE2, Set.of(), now + 1, LEASE, false));
+        assertThat(at1.plan(now + 1, FLEET, SHARE1, held).release()).containsExactlyInAnyOrderElementsOf(SHARE2);
+
+        LeaseTable at2 = new LeaseTable("node2", LEASE, now, LEASE);
+        assertThat(at2.listening(now + LEASE)).isTrue();
+        assertThat(at2.listening(now + LEASE + 1)).isFalse();
+    }
 }
