@@ -19,10 +19,4 @@ public class DeviceLease extends BrainIoTEvent {
     public List<String> owned;
     /** How long the lease holds after it was sent, in milliseconds of wall time. */
     public long leaseMillis;
-    /**
-     * Whether the node is still listening (it started or came back into its fabric less than a lease period ago) and
-     * takes no device yet: the nodes that hold its share keep it until a lease of its says it no longer listens, so
-     * that the share's devices are not left without an owner meanwhile. False from a node that does not say.
-     */
-    public boolean listening;
 }

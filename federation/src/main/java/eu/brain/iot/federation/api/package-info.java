@@ -3,7 +3,7 @@
  * which a consumer on the bus stays local ({@link eu.brain.iot.federation.api.FabricProperties#LOCAL_ONLY}).
  */
 @Export
-@Version("1.2.0")
+@Version("1.1.0")
 package eu.brain.iot.federation.api;
 
 import org.osgi.annotation.bundle.Export;

@@ -116,7 +116,7 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         }
         long now = System.nanoTime();
         LeaseTable.Lease heard = new LeaseTable.Lease(lease.node, Set.copyOf(lease.share), Set.copyOf(lease.owned),
-                now, TimeUnit.MILLISECONDS.toNanos(Math.max(1, lease.leaseMillis)), lease.listening);
+                now, TimeUnit.MILLISECONDS.toNanos(Math.max(1, lease.leaseMillis)));
         thread.execute(() -> {
             if (table != null) {
                 table.heard(heard);
@@ -182,7 +182,6 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         lease.share = new ArrayList<>(new TreeSet<>(share));
         lease.owned = new ArrayList<>(ownership.owned());
         lease.leaseMillis = leaseMillis;
-        lease.listening = table.listening(now);
         bus.deliver(lease);
     }
 }

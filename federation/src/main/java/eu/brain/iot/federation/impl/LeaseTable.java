@@ -13,10 +13,11 @@ import java.util.TreeSet;
  * <ul>
  * <li>a device belongs to the alive node whose share holds it (the lowest name if several), else to the alive node
  * at {@code floorMod(id.hashCode(), alive)} in name order (this node counting as alive);</li>
- * <li>a node releases a device that belongs to another node once that node no longer listens (below: until then
- * the device keeps an owner), and a device that an alive node of a lower name also owns;</li>
+ * <li>a node releases a device that belongs to another node, or that an alive node of a lower name also owns;</li>
  * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
- * device, or its expiry, comes first, so that no device is commanded by two nodes at once;</li>
+ * device, or its expiry, comes first, so that no device is commanded by two nodes at once; a device its holder
+ * released is taken only a lease period after that release was heard, so that the holder's last command and the
+ * taker's first are a lease period apart (a lease lapsing is that gap by itself);</li>
  * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
  * and started again finds its share held by others);</li>
  * <li>a device no node has claimed since this node started (in no share and held by no node it heard, alive or
@@ -31,13 +32,7 @@ import java.util.TreeSet;
 final class LeaseTable {
 
     /** A node's lease as heard: its share, what it owns, when it was heard and for how long it holds. */
-    record Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos,
-            boolean listening) {
-        /** The lease of a node that no longer listens. */
-        Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos) {
-            this(node, share, owned, heardNanos, leaseNanos, false);
-        }
-
+    record Lease(String node, Set<String> share, Set<String> owned, long heardNanos, long leaseNanos) {
         boolean alive(long now) {
             return now - heardNanos <= leaseNanos;
         }
@@ -57,6 +52,8 @@ final class LeaseTable {
     private final Map<String, Lease> heard = new TreeMap<>();
     /** Every device a lease heard since this table started named in its share or as owned. */
     private final Set<String> claimed = new TreeSet<>();
+    /** When a holder's lease was first heard without a device its previous lease listed (its release). */
+    private final Map<String, Long> releasedNanos = new TreeMap<>();
 
     /**
      * @param leaseNanos     how long a lease holds; this node takes nothing for that long after it started
@@ -74,7 +71,14 @@ final class LeaseTable {
     /** Another node's lease; this node's own is ignored. */
     void heard(Lease lease) {
         if (!lease.node().equals(self)) {
-            heard.put(lease.node(), lease);
+            Lease before = heard.put(lease.node(), lease);
+            if (before != null) {
+                for (String d : before.owned()) {
+                    if (!lease.owned().contains(d)) {
+                        releasedNanos.put(d, lease.heardNanos());
+                    }
+                }
+            }
             claimed.addAll(lease.share());
             claimed.addAll(lease.owned());
         }
@@ -100,17 +104,17 @@ final class LeaseTable {
         Set<String> release = new TreeSet<>();
         for (String d : owned) {
             boolean lowerHolds = alive.stream().anyMatch(l -> l.node().compareTo(self) < 0 && l.owned().contains(d));
-            String owner = owner(d, share, alive);
-            boolean ownerReady = alive.stream().noneMatch(l -> l.node().equals(owner) && l.listening());
-            if (lowerHolds || !self.equals(owner) && ownerReady) {
+            if (lowerHolds || !self.equals(owner(d, share, alive))) {
                 release.add(d);
             }
         }
         Set<String> take = new TreeSet<>();
-        if (!listening(now)) {
+        if (now - startedNanos > leaseNanos) {
             boolean joinGraceOver = now - startedNanos > joinGraceNanos;
             for (String d : fleet) {
-                boolean mayTake = joinGraceOver || share.contains(d) || claimed.contains(d);
+                Long released = releasedNanos.get(d);
+                boolean mayTake = (joinGraceOver || share.contains(d) || claimed.contains(d))
+                        && (released == null || now - released >= leaseNanos);
                 if (mayTake && !owned.contains(d) && self.equals(owner(d, share, alive))
                         && alive.stream().noneMatch(l -> l.owned().contains(d))) {
                     take.add(d);
@@ -118,11 +122,6 @@ final class LeaseTable {
             }
         }
         return new Plan(take, release);
-    }
-
-    /** Whether this node still listens: it takes nothing yet (its leases say so). */
-    boolean listening(long now) {
-        return now - startedNanos <= leaseNanos;
     }
 
     /** The node a device belongs to now. */

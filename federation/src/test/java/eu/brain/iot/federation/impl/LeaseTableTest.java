@@ -68,7 +68,10 @@ class LeaseTableTest {
                 .as("robot3 belongs to node1, alive again").containsExactly("robot3");
 
         t.heard(lease("node2", SHARE2, SHARE2, now + 1)); // its next lease, without robot3
-        assertThat(t.plan(now + 1, FLEET, SHARE1, Set.of("robot1", "door1")).take()).containsExactly("robot3");
+        assertThat(t.plan(now + 1, FLEET, SHARE1, Set.of("robot1", "door1")).take()).as("a lease period first")
+                .isEmpty();
+        t.heard(lease("node2", SHARE2, SHARE2, now + 1 + LEASE));
+        assertThat(t.plan(now + 1 + LEASE, FLEET, SHARE1, Set.of("robot1", "door1")).take()).containsExactly("robot3");
     }
 
     @Test
@@ -123,17 +126,19 @@ class LeaseTableTest {
     }
 
     @Test
-    void theHolderOfAReturningNodesShareKeepsItUntilThatNodeNoLongerListens() {
+    void aDeviceItsHolderReleasedIsTakenALeasePeriodAfterTheRelease() {
         long now = 10 * LEASE;
-        LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
+        LeaseTable at2 = new LeaseTable("node2", LEASE, 0, LEASE);
         Set<String> held = Set.of("robot1", "robot3", "door1", "robot2", "robot4"); // node2's share taken when it died
-        at1.heard(new LeaseTable.Lease("node2", SHARE2, Set.of(), now, LEASE, true)); // node2 back, listening
-        assertThat(at1.plan(now, FLEET, SHARE1, held).release()).as("no owner meanwhile otherwise").isEmpty();
-        at1.heard(new LeaseTable.Lease("node2", SHARE2, Set.of(), now + 1, LEASE, false));
-        assertThat(at1.plan(now + 1, FLEET, SHARE1, held).release()).containsExactlyInAnyOrderElementsOf(SHARE2);
-
-        LeaseTable at2 = new LeaseTable("node2", LEASE, now, LEASE);
-        assertThat(at2.listening(now + LEASE)).isTrue();
-        assertThat(at2.listening(now + LEASE + 1)).isFalse();
+        at2.heard(lease("node1", SHARE1, held, now));
+        assertThat(at2.plan(now, FLEET, SHARE2, Set.of()).take()).as("node1 still holds it").isEmpty();
+        at2.heard(lease("node1", SHARE1, SHARE1, now + 1)); // node1 released robot2 and robot4
+        assertThat(at2.plan(now + 1, FLEET, SHARE2, Set.of()).take()).as("node1 may have commanded them just now")
+                .isEmpty();
+        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE));
+        assertThat(at2.plan(now + LEASE, FLEET, SHARE2, Set.of()).take()).isEmpty();
+        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE + 1));
+        assertThat(at2.plan(now + LEASE + 1, FLEET, SHARE2, Set.of()).take()).as("a lease period after the release")
+                .containsExactlyInAnyOrderElementsOf(SHARE2);
     }
 }
