@@ -75,12 +75,6 @@ public final class FabricNode implements AutoCloseable {
     private boolean joinedBefore;
     /** When this node was made: for {@link Inbox#STARTING_NANOS} after, events wait for the behaviours they are for. */
     private final long madeNanos = System.nanoTime();
-    /**
-     * Set once the node's own Bundle Installer is there: it registers only once the behaviours of its journal are
-     * back, so events no behaviour takes stop waiting for them then, rather than holding up every later event of
-     * their publisher (its leases among them) for the rest of {@link Inbox#STARTING_NANOS}.
-     */
-    private volatile boolean behavioursBack;
 
     /**
      * @throws IOException when the key cannot be read or the state folder not used: the node does not join
@@ -316,7 +310,7 @@ public final class FabricNode implements AutoCloseable {
         Inbox inbox = inboxes.get(from);
         if (inbox == null) {
             inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats,
-                    () -> !behavioursBack && System.nanoTime() - madeNanos < Inbox.STARTING_NANOS);
+                    () -> System.nanoTime() - madeNanos < Inbox.STARTING_NANOS);
             inboxes.put(from, inbox);
         }
         long dupsBefore = stats.duplicates.sum();
@@ -425,9 +419,6 @@ public final class FabricNode implements AutoCloseable {
     /** This node's own installer, which the fabric's wraps and answers other nodes from; {@code null} for none. */
     public void localInstaller(eu.brain.iot.bis.api.BundleInstaller local) {
         installer.local(local);
-        if (local != null) {
-            behavioursBack = true;
-        }
     }
 
     /** @return whether the node is connected to the broker and announced */

@@ -303,44 +303,6 @@ class FabricTest extends FabricTestBase {
         assertThat(b2.bus.statistics(MOVED).unhandled).as("none unhandled on the restarted node").isZero();
     }
 
-    /**
-     * On a node started again whose own installer is back (its journal's behaviours with it), an event sent to it
-     * before it stopped that none of its behaviours takes now goes to the bus's unhandled rules at once: it does not
-     * hold up its publisher's later events for {@link Inbox#STARTING_NANOS} (a node's leases and beats among them).
-     */
-    @ParameterizedTest
-    @EnumSource(Broker.Kind.class)
-    void anEventNoBehaviourTakesOnANodeWhoseInstallerIsBackHoldsUpNoLaterOne(Broker.Kind kind) throws Exception {
-        startBroker(kind);
-        TestNode a = node("a");
-        TestNode b = node("b");
-        Recorder r = new Recorder();
-        b.addBehaviour(r, null, MOVED);
-        b.addBehaviour((eu.brain.iot.eventing.api.SmartBehaviour<Nobody>) e -> { }, null, Nobody.class.getName());
-        awaitInterest(a, b, 2);
-        r.dieWith(b);
-        nodes.remove(b);
-        a.bus.deliver(new Nobody()); // for a behaviour b does not have after its restart
-        int total = 20;
-        for (int i = 1; i <= total; i++) {
-            a.bus.deliver(new Moved("r1", i));
-        }
-        await("all kept for b").atMost(DEADLINE).until(() -> a.statsOf("b").backlog() == total + 1);
-
-        TestNode b2 = new TestNode("b", settings("b")); // the same name and state folder
-        nodes.add(b2);
-        Recorder r2 = new Recorder();
-        b2.addBehaviour(r2, null, MOVED);
-        b2.start();
-        b2.fabric.localInstaller(new FakeInstaller()); // registered once its journal's behaviours are back
-
-        // held up, they would come once the 10 s are over
-        await("not held up behind the event nobody takes").atMost(Duration.ofNanos(Inbox.STARTING_NANOS / 2))
-                .until(() -> r2.got.size() == total);
-        assertThat(r2.seqs()).isEqualTo(range(1, total));
-        await().atMost(DEADLINE).until(() -> b2.bus.statistics(Nobody.class.getName()).unhandled == 1);
-    }
-
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
     void aNodeThatDiesLosesItsInterestByItsLastWill(Broker.Kind kind) throws Exception {
