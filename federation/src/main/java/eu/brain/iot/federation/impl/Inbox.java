@@ -8,8 +8,10 @@ import java.nio.charset.StandardCharsets;
 import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.StandardOpenOption;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
 import java.util.function.BooleanSupplier;
@@ -22,7 +24,11 @@ import eu.brain.iot.federation.impl.Wire.Event;
  * order. An event whose sequence number was taken already is dropped as a duplicate; one that comes early (an
  * earlier one was lost on the way and will be sent again) waits in {@link #early}, bounded; the next expected one is
  * offered to the bus ({@link RemoteEvents#tryDeliverRemote}), and when every behaviour that took it returned from
- * {@code notify}, it counts as done. The window, the highest sequence number up to which every event is done
+ * {@code notify}, it counts as done. While the node is starting, an event no behaviour takes yet waits in
+ * {@link #parked} with every later event of its type, and the events of other types go on past it: an event kept
+ * for a behaviour that is still coming up, or that this node no longer runs, does not hold up its publisher's other
+ * events (its leases, its beats). Parked events are offered again first, in order; once the node has started they
+ * go to the bus's unhandled rules before any later event. The window, the highest sequence number up to which every event is done
  * ({@code epoch through}), is written to a file the moment it moves (one positioned write in place, handed to the
  * operating system: it survives the node's process being killed), and acknowledged soon after: after a restart of
  * this node, events up to it are duplicates, and events after it are delivered again: those that were waiting in
@@ -55,6 +61,8 @@ final class Inbox {
     /** The next sequence number to offer to the bus. */
     private long next;
     private final TreeMap<Long, Event> early = new TreeMap<>();
+    /** Events taken out of order while starting: none of this node's behaviours took them yet (inbound thread). */
+    private final TreeMap<Long, Event> parked = new TreeMap<>();
     /** Every event up to this one is done (guarded by this). */
     private long done;
     private final TreeSet<Long> doneAhead = new TreeSet<>();
@@ -114,6 +122,7 @@ final class Inbox {
     /** A new sequence stream from this publisher (its state was reset): its numbers start again. */
     private void restart(String newEpoch) {
         early.clear();
+        parked.clear();
         next = 1;
         synchronized (this) {
             epoch = newEpoch;
@@ -124,24 +133,49 @@ final class Inbox {
         ackedThrough = -1;
     }
 
-    /** @return whether events wait because the bus refused one */
+    /** @return whether events wait because the bus refused one, or none of this node's behaviours takes it yet */
     boolean offer(RemoteEvents bus, Runnable onDone) {
+        boolean startingNow = starting.getAsBoolean();
+        Set<String> held = new HashSet<>(); // types with an event waiting: their later events wait behind it
+        for (var it = parked.values().iterator(); it.hasNext();) {
+            Event e = it.next();
+            if (held.contains(e.type()) || !deliver(bus, e, startingNow, onDone)) {
+                if (!startingNow) {
+                    return true; // started: in order again, from the first one parked
+                }
+                held.add(e.type());
+                continue;
+            }
+            it.remove();
+        }
         while (!early.isEmpty() && early.firstKey() == next) {
             Event e = early.firstEntry().getValue();
-            long seq = e.seq();
-            String forEpoch = epoch;
-            Map<String, Object> data = e.data();
-            data.putIfAbsent("sourceNode", publisher);
-            Runnable done = () -> completed(forEpoch, seq, onDone);
-            if (!(starting.getAsBoolean() ? bus.tryDeliverRemoteToBehaviours(e.type(), e.types(), data, done)
-                    : bus.tryDeliverRemote(e.type(), e.types(), data, done))) {
-                return true;
+            if (held.contains(e.type()) || !deliver(bus, e, startingNow, onDone)) {
+                if (!startingNow || parked.size() + early.size() > MAX_EARLY) {
+                    return true;
+                }
+                held.add(e.type());
+                parked.put(e.seq(), e);
             }
             early.pollFirstEntry();
-            stats.received.increment();
             next++;
         }
-        return false;
+        return !parked.isEmpty();
+    }
+
+    /** Offers one event to the bus: while starting, to this node's behaviours only. */
+    private boolean deliver(RemoteEvents bus, Event e, boolean startingNow, Runnable onDone) {
+        long seq = e.seq();
+        String forEpoch = epoch;
+        Map<String, Object> data = e.data();
+        data.putIfAbsent("sourceNode", publisher);
+        Runnable done = () -> completed(forEpoch, seq, onDone);
+        boolean taken = startingNow ? bus.tryDeliverRemoteToBehaviours(e.type(), e.types(), data, done)
+                : bus.tryDeliverRemote(e.type(), e.types(), data, done);
+        if (taken) {
+            stats.received.increment();
+        }
+        return taken;
     }
 
     private void completed(String forEpoch, long seq, Runnable onDone) {
@@ -194,9 +228,9 @@ final class Inbox {
         return new Wire.Ack(self, publisher, e, through, now);
     }
 
-    /** Events waiting for an earlier one or for room in the bus. */
+    /** Events waiting for an earlier one, for room in the bus, or for a behaviour of this starting node. */
     int waiting() {
-        return early.size();
+        return early.size() + parked.size();
     }
 
     void close() throws IOException {
