@@ -19,7 +19,8 @@ import java.util.TreeSet;
  * released is taken only a lease period after that release was heard, so that the holder's last command and the
  * taker's first are a lease period apart (a lease lapsing is that gap by itself);</li>
  * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
- * and started again finds its share held by others);</li>
+ * and started again finds its share held by others); nor while a node alive was first heard less than a lease period
+ * ago, as that node may have released a device just before (its release unheard here);</li>
  * <li>a device no node has claimed since this node started (in no share and held by no node it heard, alive or
  * lapsed) is taken only once this node has run for the join grace: the node whose share holds it has that long to
  * join, so that a fabric whose nodes start a few seconds apart does not first hand every device to the node that
@@ -54,6 +55,8 @@ final class LeaseTable {
     private final Set<String> claimed = new TreeSet<>();
     /** When a holder's lease was first heard without a device its previous lease listed (its release). */
     private final Map<String, Long> releasedNanos = new TreeMap<>();
+    /** When each node's first lease was heard by this table. */
+    private final Map<String, Long> firstHeardNanos = new TreeMap<>();
 
     /**
      * @param leaseNanos     how long a lease holds; this node takes nothing for that long after it started
@@ -72,6 +75,7 @@ final class LeaseTable {
     void heard(Lease lease) {
         if (!lease.node().equals(self)) {
             Lease before = heard.put(lease.node(), lease);
+            firstHeardNanos.putIfAbsent(lease.node(), lease.heardNanos());
             if (before != null) {
                 for (String d : before.owned()) {
                     if (!lease.owned().contains(d)) {
@@ -109,7 +113,7 @@ final class LeaseTable {
             }
         }
         Set<String> take = new TreeSet<>();
-        if (now - startedNanos > leaseNanos) {
+        if (now - startedNanos > leaseNanos && everyAliveNodeHeardForALease(alive, now)) {
             boolean joinGraceOver = now - startedNanos > joinGraceNanos;
             for (String d : fleet) {
                 Long released = releasedNanos.get(d);
@@ -122,6 +126,14 @@ final class LeaseTable {
             }
         }
         return new Plan(take, release);
+    }
+
+    /**
+     * Whether every alive node has been heard for a lease period: a node first heard just now may have released a
+     * device a moment before (this node then never heard the release), and commanded it until then.
+     */
+    private boolean everyAliveNodeHeardForALease(List<Lease> alive, long now) {
+        return alive.stream().allMatch(l -> now - firstHeardNanos.getOrDefault(l.node(), now) >= leaseNanos);
     }
 
     /** The node a device belongs to now. */

@@ -23,6 +23,7 @@ class LeaseTableTest {
     @Test
     void aNodeJustStartedTakesNothingForOneLeasePeriodThenItsShare() {
         LeaseTable t = new LeaseTable("node1", LEASE, 0, LEASE);
+        t.heard(lease("node2", SHARE2, SHARE2, 0));
         assertThat(t.plan(LEASE, FLEET, SHARE1, Set.of()).take()).as("still listening").isEmpty();
         t.heard(lease("node2", SHARE2, SHARE2, LEASE));
         LeaseTable.Plan plan = t.plan(LEASE + 1, FLEET, SHARE1, Set.of());
@@ -37,8 +38,10 @@ class LeaseTableTest {
         LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
         LeaseTable at3 = new LeaseTable("node3", LEASE, 0, LEASE);
         at1.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at1.heard(lease("node3", Set.of(), Set.of(), 0)); // heard all along
         at1.heard(lease("node3", Set.of(), Set.of(), now));
         at3.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at3.heard(lease("node1", SHARE1, SHARE1, 0));
         at3.heard(lease("node1", SHARE1, SHARE1, now));
         assertThat(at1.lapsed(now)).containsExactly("node2");
 
@@ -58,6 +61,7 @@ class LeaseTableTest {
         long now = 10 * LEASE;
         LeaseTable t = new LeaseTable("node1", LEASE, 0, LEASE);
         // node2 holds node1's robot3 (taken while node1 was away) and has not let it go yet
+        t.heard(lease("node2", SHARE2, Set.of("robot2", "robot4", "robot3"), 0));
         t.heard(lease("node2", SHARE2, Set.of("robot2", "robot4", "robot3"), now));
         LeaseTable.Plan plan = t.plan(now, FLEET, SHARE1, Set.of());
         assertThat(plan.take()).containsExactlyInAnyOrder("robot1", "door1");
@@ -139,6 +143,18 @@ class LeaseTableTest {
         assertThat(at2.plan(now + LEASE, FLEET, SHARE2, Set.of()).take()).isEmpty();
         at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE + 1));
         assertThat(at2.plan(now + LEASE + 1, FLEET, SHARE2, Set.of()).take()).as("a lease period after the release")
+                .containsExactlyInAnyOrderElementsOf(SHARE2);
+    }
+
+    @Test
+    void nothingIsTakenUntilEveryNodeAliveHasBeenHeardForALeasePeriod() {
+        long now = 10 * LEASE;
+        // node2 came back and hears node1 for the first time: node1 may have released robot2 just before
+        LeaseTable at2 = new LeaseTable("node2", LEASE, now - LEASE - 1, LEASE);
+        at2.heard(lease("node1", SHARE1, SHARE1, now));
+        assertThat(at2.plan(now, FLEET, SHARE2, Set.of()).take()).isEmpty();
+        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE));
+        assertThat(at2.plan(now + LEASE, FLEET, SHARE2, Set.of()).take())
                 .containsExactlyInAnyOrderElementsOf(SHARE2);
     }
 }
