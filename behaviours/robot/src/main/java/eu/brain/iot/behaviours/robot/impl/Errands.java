@@ -330,11 +330,26 @@ final class Errands {
         errands.remove(robot);
     }
 
-    /** The robot gives its cart back to the table (it cannot fetch it); another robot may claim it. */
+    /**
+     * The robot's errand is planned anew (its commands were refused): going for a cart, it gives the cart back to the
+     * table (it cannot fetch it; another robot may claim it); carrying one, it keeps it and its storage cell is chosen
+     * again as it goes (only it can bring that cart to storage); going home, it goes on home.
+     */
     void release(String robot) {
-        Errand e = errands.remove(robot);
-        if (e != null && e.drop() != null) {
+        Errand e = errands.get(robot);
+        if (e == null) {
+            return;
+        }
+        if (e.drop() != null) {
             drops.remove(e.drop());
+        }
+        switch (e.leg()) {
+            case TO_STORAGE -> errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), null,
+                    e.dock()));
+            case TO_DOCK -> {
+                // still on its way home
+            }
+            default -> errands.remove(robot);
         }
     }
 
@@ -342,7 +357,8 @@ final class Errands {
         return delivered;
     }
 
-    private boolean claimed(String cart) {
+    /** @return whether a robot has an errand for this cart */
+    boolean claimed(String cart) {
         return errands.values().stream().anyMatch(e -> cart.equals(e.cart()));
     }
 

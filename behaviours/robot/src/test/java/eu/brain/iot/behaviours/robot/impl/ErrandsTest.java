@@ -65,6 +65,34 @@ class ErrandsTest {
     }
 
     @Test
+    void anErrandPlannedAnewKeepsTheCartARobotCarriesAndGivesBackOneItWentFor() {
+        Errands errands = new Errands(6);
+        Cell cartCell = new Cell(6, 8);
+        List<CartState> carts = new ArrayList<>(List.of(new CartState("cart0", cartCell, null),
+                new CartState("cart1", new Cell(7, 8), null)));
+        errands.seen("robot1", new Cell(1, 1), true);
+        errands.seen("robot2", new Cell(2, 1), true);
+        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND)).isPresent();
+        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND)).isPresent();
+        Cell drop = errands.lifted("robot1", cartCell, carriedBy(carts, 0, "robot1"), BAND).orElseThrow().drop();
+
+        errands.release("robot1"); // its go-tos to storage refused too often (its node handing it over)
+        Errands.Errand kept = errands.of("robot1");
+        assertThat(kept).as("only robot1 can bring its cart to storage").isNotNull();
+        assertThat(kept.leg()).isEqualTo(Errands.Leg.TO_STORAGE);
+        assertThat(kept.cart()).isEqualTo("cart0");
+        assertThat(kept.drop()).as("a storage cell chosen again as it goes").isNull();
+        assertThat(errands.lifted("robot1", cartCell, carriedBy(carts, 0, "robot1"), BAND)).isPresent()
+                .get().extracting(Errands.Errand::drop).as("its old cell is free again").isEqualTo(drop);
+
+        Errands.Errand toCart = errands.of("robot2");
+        assertThat(toCart.leg()).isEqualTo(Errands.Leg.TO_CART);
+        errands.release("robot2"); // on its way to a cart: the cart goes back to the table
+        assertThat(errands.of("robot2").cart()).isNull();
+        assertThat(errands.claimed(toCart.cart())).as("claimable again").isFalse();
+    }
+
+    @Test
     void aRobotTakenOverCarryingACartCarriesItToStorageAndGetsAFreeDock() {
         Errands errands = new Errands(6);
         RobotState docked = robot("robot1", new Cell(1, 1), null, null, null);
