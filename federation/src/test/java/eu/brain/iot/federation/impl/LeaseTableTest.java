@@ -74,8 +74,9 @@ class LeaseTableTest {
         t.heard(lease("node2", SHARE2, SHARE2, now + 1)); // its next lease, without robot3
         assertThat(t.plan(now + 1, FLEET, SHARE1, Set.of("robot1", "door1")).take()).as("a lease period first")
                 .isEmpty();
-        t.heard(lease("node2", SHARE2, SHARE2, now + 1 + LEASE));
-        assertThat(t.plan(now + 1 + LEASE, FLEET, SHARE1, Set.of("robot1", "door1")).take()).containsExactly("robot3");
+        t.heard(lease("node2", SHARE2, SHARE2, now + 1 + LEASE * 5 / 4));
+        assertThat(t.plan(now + 1 + LEASE * 5 / 4, FLEET, SHARE1, Set.of("robot1", "door1")).take())
+                .containsExactly("robot3");
     }
 
     @Test
@@ -130,7 +131,7 @@ class LeaseTableTest {
     }
 
     @Test
-    void aDeviceItsHolderReleasedIsTakenALeasePeriodAfterTheRelease() {
+    void aDeviceItsHolderReleasedIsTakenALeasePeriodAndAQuarterAfterTheRelease() {
         long now = 10 * LEASE;
         LeaseTable at2 = new LeaseTable("node2", LEASE, 0, LEASE);
         Set<String> held = Set.of("robot1", "robot3", "door1", "robot2", "robot4"); // node2's share taken when it died
@@ -139,11 +140,11 @@ class LeaseTableTest {
         at2.heard(lease("node1", SHARE1, SHARE1, now + 1)); // node1 released robot2 and robot4
         assertThat(at2.plan(now + 1, FLEET, SHARE2, Set.of()).take()).as("node1 may have commanded them just now")
                 .isEmpty();
-        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE));
-        assertThat(at2.plan(now + LEASE, FLEET, SHARE2, Set.of()).take()).isEmpty();
-        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE + 1));
-        assertThat(at2.plan(now + LEASE + 1, FLEET, SHARE2, Set.of()).take()).as("a lease period after the release")
-                .containsExactlyInAnyOrderElementsOf(SHARE2);
+        at2.heard(lease("node1", SHARE1, SHARE1, now + LEASE * 5 / 4));
+        assertThat(at2.plan(now + LEASE * 5 / 4, FLEET, SHARE2, Set.of()).take()).isEmpty();
+        at2.heard(lease("node1", SHARE1, SHARE1, now + 1 + LEASE * 5 / 4));
+        assertThat(at2.plan(now + 1 + LEASE * 5 / 4, FLEET, SHARE2, Set.of()).take())
+                .as("a lease period and a quarter after the release").containsExactlyInAnyOrderElementsOf(SHARE2);
     }
 
     @Test
