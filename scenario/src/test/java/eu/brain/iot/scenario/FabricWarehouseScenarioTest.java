@@ -24,7 +24,10 @@ import com.fasterxml.jackson.databind.JsonNode;
  * (at 25 s of warehouse time: the robots get their first commands at about 8 s, the last cart reaches storage at
  * about 45 s).
  * Its robots go to node1 when node2's lease lapses, the robot behaviour on node1 drives them (it led already, or
- * takes over from node2's), and every cart still reaches storage with every REQ-1/REQ-2 check passing.
+ * takes over from node2's), and every cart still reaches storage with every REQ-1/REQ-2 check passing. node2 is
+ * started again 6 s later (its own configuration and state): it rejoins, node1 gives its share back a lease period
+ * after releasing it (no robot commanded by both within a lease period), and its robot behaviour, restored from its
+ * journal, stands by beside node1's.
  *
  * <p>Speed 2: REQ-2's 10 s limit is 5 s of wall time, and a lease (2 s of wall time) 4 s of warehouse time. The run
  * folder is kept under {@code scenario/target/chain-runs/<test>-<time>} (each node's log in {@code nodeK/node.log}).
@@ -40,7 +43,7 @@ class FabricWarehouseScenarioTest {
                 .toAbsolutePath();
         List<String> args = new ArrayList<>(List.of("--root", ROOT.toString(), "--seed", "3", "--speed", "2",
                 "--deadline", "10", "--progress", "10", "--run-dir", run.toString(), "--nodes", "2",
-                "--kill-node", "node2@25s"));
+                "--kill-node", "node2@25s+6s"));
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         PrintStream print = new PrintStream(out, true, StandardCharsets.UTF_8);
         int code = Main.run(args.toArray(String[]::new), print, print);
@@ -59,17 +62,26 @@ class FabricWarehouseScenarioTest {
         JsonNode node1 = report.path("nodes").path(0);
         JsonNode node2 = report.path("nodes").path(1);
         assertThat(node2.path("killedAtWarehouseSeconds").asDouble()).as(diagnosis).isPositive();
-        assertThat(node2.path("devicesOwned").toString()).as("node2's share before it died")
+        assertThat(node2.path("restartedAtWarehouseSeconds").asDouble()).as(diagnosis)
+                .isGreaterThan(node2.path("killedAtWarehouseSeconds").asDouble());
+        assertThat(text).as(diagnosis).contains("fault: node2 started again",
+                "PASS  every node started again got a share of the fleet back");
+        assertThat(node2.path("devicesOwned").toString()).as("node2's share, back after its restart")
                 .contains("robot1", "robot3").doesNotContain("robot2");
-        assertThat(node1.path("devicesOwned").toString()).as("node1 took node2's robots")
-                .contains("door1", "robot1", "robot2", "robot3");
+        assertThat(node1.path("devicesOwned").toString()).as("node1's share").contains("door1", "robot2")
+                .doesNotContain("robot1", "robot3");
         assertThat(node1.path("behavioursInstalled").toString()).contains("eu.brain.iot.behaviours.robot",
                 "eu.brain.iot.behaviours.door");
         assertThat(node1.path("eventsReceivedFrom").path("node2").asLong()).as("events crossed the fabric")
                 .isPositive();
         String log1 = Files.readString(run.resolve("node1/node.log"));
-        assertThat(log1).as("node1's robot behaviour drives the fleet at the end")
+        assertThat(log1).as("node1's robot behaviour drives the fleet; node1 took node2's robots, then gave them back")
                 .containsPattern("robot fleet: this instance \\(node node1\\) drives the fleet")
-                .containsPattern("Device leases of node node1: took \\[.*robot(1|3)");
+                .containsPattern("Device leases of node node1: took \\[.*robot(1|3)")
+                .containsPattern("Device leases of node node1: released \\[[^\\]]*robot(1|3)");
+        String log2 = Files.readString(run.resolve("node2/node-restarted.log"));
+        assertThat(log2).as("node2's robot behaviour, back from its journal, stands by beside node1's")
+                .contains("robot fleet: the instance on node node1 drives the fleet; this one (node node2) stands by")
+                .doesNotContain("this instance (node node2) drives the fleet");
     }
 }
