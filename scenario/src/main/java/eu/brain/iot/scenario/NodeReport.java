@@ -17,7 +17,8 @@ import java.util.Map;
  * @param cpuMs                its JVM's CPU time from the run's start until its end (or last reading)
  * @param wallMs               the wall time from the run's start until the node's end or the run's
  */
-record NodeReport(String name, Long killedAtWarehouseMs, Long restartedAtWarehouseMs, List<String> devicesOwned, List<String> behavioursInstalled,
+record NodeReport(String name, Long killedAtWarehouseMs, Long restartedAtWarehouseMs, List<String> devicesOwned,
+                  List<String> behavioursInstalled,
                   Map<String, Long> eventsSentTo, Map<String, Long> eventsReceivedFrom, Long cpuMs, long wallMs) {
 
     /** CPU time over the wall time the node ran during the run, in percent of one core; null when unknown. */

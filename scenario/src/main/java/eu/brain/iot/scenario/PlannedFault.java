@@ -160,7 +160,10 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
         private static final String HOW = "write NODE@TIME or NODE@TIME+DOWNTIME, e.g. node2@20s (node2 killed with "
                 + "kill -9 20 s of warehouse time into the scenario) or node2@20s+30s (and started again 30 s later)";
 
-        /** {@code node2@20s} or {@code node2@20s+30s}; whether the node is one of the run's is checked by {@link #checkNodes}. */
+        /**
+         * {@code node2@20s} or {@code node2@20s+30s}; whether the node is one of the run's is checked by
+         * {@link #checkNodes}.
+         */
         static KillNode parse(String spec) {
             String prefix = "--kill-node '" + spec + "': ";
             int at = spec.indexOf('@');
