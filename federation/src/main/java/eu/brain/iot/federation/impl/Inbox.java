@@ -21,18 +21,18 @@ import eu.brain.iot.federation.impl.Wire.Event;
 
 /**
  * The events one other node publishes to this node: each into the local behaviours exactly once and in its sequence
- * order. An event whose sequence number was taken already is dropped as a duplicate; one that comes early (an
- * earlier one was lost on the way and will be sent again) waits in {@link #early}, bounded; the next expected one is
- * offered to the bus ({@link RemoteEvents#tryDeliverRemote}), and when every behaviour that took it returned from
- * {@code notify}, it counts as done. While the node is starting, an event no behaviour takes yet waits in
- * {@link #parked} with every later event of its type, and the events of other types go on past it: an event kept
- * for a behaviour that is still coming up, or that this node no longer runs, does not hold up its publisher's other
- * events (its leases, its beats). Parked events are offered again first, in order; once the node has started they
- * go to the bus's unhandled rules before any later event. The window, the highest sequence number up to which
- * every event is done ({@code epoch through}), is written to a file the moment it moves (one positioned write in place, handed to the
- * operating system: it survives the node's process being killed), and acknowledged soon after: after a restart of
- * this node, events up to it are duplicates, and events after it are delivered again: those that were waiting in
- * the bus, which no behaviour had seen, and one caught inside {@code notify} by the crash.
+ * order. An event whose sequence number was taken already is dropped as a duplicate; one that comes early (an earlier
+ * one was lost on the way and will be sent again) waits in {@link #early}, bounded; the next expected one is offered to
+ * the bus ({@link RemoteEvents#tryDeliverRemote}), and when every behaviour that took it returned from {@code notify},
+ * it counts as done. While the node is starting, an event no behaviour takes yet waits in {@link #parked} with every
+ * later event of its type, and the events of other types go on past it: an event kept for a behaviour that is still
+ * coming up, or that this node no longer runs, does not hold up its publisher's other events (its leases, its beats).
+ * Parked events are offered again first, in order; once the node has started they go to the bus's unhandled rules
+ * before any later event. The window, the highest sequence number up to which every event is done ({@code epoch
+ * through}), is written to a file the moment it moves (one positioned write in place, handed to the operating system:
+ * it survives the node's process being killed), and acknowledged soon after: after a restart of this node, events up to
+ * it are duplicates, and events after it are delivered again: those that were waiting in the bus, which no behaviour
+ * had seen, and one caught inside {@code notify} by the crash.
  * <p>
  * Threads: the fabric's inbound thread owns everything but {@link #done} and {@link #doneAhead}, which the bus's
  * delivery workers update (via {@link #completed}) under this object's monitor.
