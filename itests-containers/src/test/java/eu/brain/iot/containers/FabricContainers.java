@@ -15,6 +15,7 @@ import org.testcontainers.DockerClientFactory;
 import org.testcontainers.containers.GenericContainer;
 import org.testcontainers.containers.Network;
 import org.testcontainers.images.builder.Transferable;
+import org.testcontainers.lifecycle.Startables;
 
 /**
  * The broker, robot-sim and fabric nodes, each in a container of its own on a network made for one test class,
@@ -64,11 +65,17 @@ final class FabricContainers implements AutoCloseable {
                 .waitingFor(new LogLineWait("^broker listening on ")));
     }
 
-    /** The simulated warehouse, the paper's map, on {@code robot-sim:8090}. */
-    GenericContainer<?> robotSim() {
+    /**
+     * The simulated warehouse, the paper's map, on {@code robot-sim:8090}.
+     *
+     * @param options more of robot-sim's options ({@code --seed}, {@code --speed}, ...)
+     */
+    GenericContainer<?> robotSim(String... options) {
+        List<String> command = new ArrayList<>(List.of(HEAP, "-jar", "/app/robot-sim.jar", "--port",
+                String.valueOf(FLEET_PORT), "--bind", "0.0.0.0", "--allow-host", ROBOT_SIM, "--quiet"));
+        command.addAll(List.of(options));
         return start(ROBOT_SIM, new GenericContainer<>(images.robotSim())
-                .withCommand(HEAP, "-jar", "/app/robot-sim.jar", "--port", String.valueOf(FLEET_PORT), "--bind",
-                        "0.0.0.0", "--allow-host", ROBOT_SIM, "--quiet")
+                .withCommand(command.toArray(String[]::new))
                 .withExposedPorts(FLEET_PORT)
                 .waitingFor(new LogLineWait("^listening on ")));
     }
@@ -91,6 +98,29 @@ final class FabricContainers implements AutoCloseable {
      */
     NodeContainer node(String name, boolean ownsFleet, Map<String, String> configFiles,
             Map<String, Transferable> files) {
+        NodeContainer node = prepareNode(name, ownsFleet, configFiles, files);
+        start(name, node.container());
+        return node;
+    }
+
+    /**
+     * Several nodes started at once (as the nodes of one site would be), each as {@link #node} makes it.
+     *
+     * @param configFiles per node's name, the files for its configuration folder
+     */
+    List<NodeContainer> nodesTogether(Map<String, Map<String, String>> configFiles, Map<String, Transferable> files) {
+        List<NodeContainer> nodes = new ArrayList<>();
+        configFiles.forEach((name, config) -> {
+            NodeContainer node = prepareNode(name, true, config, files);
+            containers.add(configure(name, node.container()));
+            nodes.add(node);
+        });
+        Startables.deepStart(nodes.stream().map(NodeContainer::container)).join();
+        return nodes;
+    }
+
+    private NodeContainer prepareNode(String name, boolean ownsFleet, Map<String, String> configFiles,
+            Map<String, Transferable> files) {
         String fleet = ownsFleet ? "http://" + ROBOT_SIM + ":" + FLEET_PORT + "/" : "http://127.0.0.1:" + NO_FLEET_PORT + "/";
         String token = newToken();
         GenericContainer<?> c = new GenericContainer<>(images.node())
@@ -105,17 +135,20 @@ final class FabricContainers implements AutoCloseable {
         configFiles.forEach((file, content) -> c.withCopyToContainer(
                 Transferable.of(content.getBytes(StandardCharsets.UTF_8), 0644), CONFIG_DIR + file));
         files.forEach((path, content) -> c.withCopyToContainer(content, path));
-        return new NodeContainer(name, token, start(name, c));
+        return new NodeContainer(name, token, c);
     }
 
     private GenericContainer<?> start(String alias, GenericContainer<?> c) {
-        c.withNetwork(network).withNetworkAliases(alias)
+        containers.add(configure(alias, c));
+        c.start();
+        return c;
+    }
+
+    private GenericContainer<?> configure(String alias, GenericContainer<?> c) {
+        return c.withNetwork(network).withNetworkAliases(alias)
                 .withLabels(Map.of(TestSettings.LABEL, settings.prefix()))
                 .withCreateContainerCmdModifier(cmd -> cmd.withName(settings.prefix() + alias + "-" + runId))
                 .withStartupTimeout(START_TIMEOUT);
-        containers.add(c);
-        c.start();
-        return c;
     }
 
     /** The embedded broker's URI as the nodes see it. */

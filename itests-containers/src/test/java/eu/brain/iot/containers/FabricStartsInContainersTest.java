@@ -52,7 +52,7 @@ class FabricStartsInContainersTest {
             assertThat(node.logs()).contains(FabricContainers.NODE_READY).doesNotContain("WITH PROBLEMS");
             await(node.name() + "'s REST API").atMost(Duration.ofSeconds(60)).pollInterval(Duration.ofMillis(250))
                     .ignoreExceptions().until(() -> node.get("/sensinact/providers", true).status() == 200);
-            NodeContainer.Answer refused = node.get("/sensinact/providers", false);
+            PlainHttp.Answer refused = node.get("/sensinact/providers", false);
             assertThat(refused.status()).as("without the token").isEqualTo(401);
             assertThat(refused.body()).startsWith("{");
         }

@@ -58,6 +58,11 @@ final class FederatedProbes {
         return files;
     }
 
+    /** The key (mode 600) alone. */
+    Map<String, Transferable> keyFile() {
+        return Map.of(KEY_PATH, Transferable.of(key, 0600));
+    }
+
     /** The key (mode 600) and the probe bundle. */
     Map<String, Transferable> files() throws IOException {
         return Map.of(KEY_PATH, Transferable.of(key, 0600),

@@ -22,11 +22,11 @@ import java.util.stream.Collectors;
  *       on one node has one commander;</li>
  *   <li>the run ended before its deadline.</li>
  * </ul>
- * Stateless.
+ * Public: the multi-node tests in containers ({@code itests-containers}) judge their runs with it. Stateless.
  */
-final class Judge {
+public final class Judge {
     /** The lease period of a robot's ownership in a fabric of nodes, in wall time, unless told otherwise. */
-    static final long DEFAULT_LEASE_MS = 2_000;
+    public static final long DEFAULT_LEASE_MS = 2_000;
     /** Hand-overs named in a failed check; the others are counted. */
     private static final int SHOWN = 10;
 
@@ -34,7 +34,7 @@ final class Judge {
     }
 
     /** How a run ended. */
-    enum RunEnd {
+    public enum RunEnd {
         /** the warehouse was done */
         FINISHED,
         /** the deadline ended it */
@@ -65,7 +65,7 @@ final class Judge {
      *                    {@code NODE_ENDED}
      * @param leaseMs     the lease period (wall ms): two nodes commanding one robot closer than this fail the run
      */
-    static Verdict judge(WorldSnapshot end, long waitLimitMs, RunEnd how, long endedMs, long leaseMs) {
+    public static Verdict judge(WorldSnapshot end, long waitLimitMs, RunEnd how, long endedMs, long leaseMs) {
         List<Verdict.Check> checks = new ArrayList<>();
         List<String> missing = end.cartsNotInStorage();
         checks.add(new Verdict.Check("REQ-1 every cart lifted and carried to storage", missing.isEmpty(),

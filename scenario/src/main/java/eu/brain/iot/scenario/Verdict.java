@@ -3,17 +3,17 @@ package eu.brain.iot.scenario;
 import java.util.List;
 
 /** The judge's findings: each check with whether it passed and what was seen. Immutable. */
-record Verdict(List<Check> checks) {
+public record Verdict(List<Check> checks) {
 
     /** One requirement checked on the ground truth. */
-    record Check(String name, boolean passed, String detail) {
+    public record Check(String name, boolean passed, String detail) {
     }
 
-    boolean passed() {
+    public boolean passed() {
         return checks.stream().allMatch(Check::passed);
     }
 
-    List<Check> failed() {
+    public List<Check> failed() {
         return checks.stream().filter(c -> !c.passed()).toList();
     }
 }

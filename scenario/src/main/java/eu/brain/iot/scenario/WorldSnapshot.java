@@ -10,9 +10,9 @@ import java.util.TreeMap;
 
 /**
  * One {@code GET /world} document of robot-sim (map, robots, carts, doors, counters), read the way its README says:
- * the ground truth the scenario is judged on. Immutable.
+ * the ground truth the scenario is judged on (here and in the multi-node tests in containers). Immutable.
  */
-record WorldSnapshot(JsonNode doc) {
+public record WorldSnapshot(JsonNode doc) {
 
     private static final int DOCKING = 1;
 
@@ -20,7 +20,7 @@ record WorldSnapshot(JsonNode doc) {
      * A robot commanded by another node than the one that commanded it before (robot-sim's {@code commandOrigins}):
      * {@code from}'s last command, then {@code to}'s, in warehouse time and wall time (epoch ms).
      */
-    record Handover(String robot, String from, String to, long fromWarehouseMs, long fromWallMillis,
+    public record Handover(String robot, String from, String to, long fromWarehouseMs, long fromWallMillis,
                     long warehouseMs, long wallMillis) {
         long gapWallMillis() {
             return wallMillis - fromWallMillis;
@@ -33,7 +33,7 @@ record WorldSnapshot(JsonNode doc) {
         }
     }
 
-    long step() {
+    public long step() {
         return doc.path("step").asLong();
     }
 
@@ -45,7 +45,7 @@ record WorldSnapshot(JsonNode doc) {
         return counters().path("stepMillis").asLong(Options.STEP_MILLIS);
     }
 
-    long warehouseMillis() {
+    public long warehouseMillis() {
         return step() * stepMillis();
     }
 
@@ -110,7 +110,7 @@ record WorldSnapshot(JsonNode doc) {
         return cartsNotInStorage().isEmpty();
     }
 
-    boolean finished() {
+    public boolean finished() {
         return allDelivered() && robotsNotHome().isEmpty();
     }
 
@@ -193,7 +193,7 @@ record WorldSnapshot(JsonNode doc) {
     }
 
     /** Per robot that took a command, the node that sent it the last one ({@code unknown}: it named none). */
-    Map<String, String> lastCommanders() {
+    public Map<String, String> lastCommanders() {
         Map<String, String> by = new TreeMap<>();
         commandOrigins().path("robots").fields()
                 .forEachRemaining(e -> by.put(e.getKey(), e.getValue().path("node").asText()));
@@ -204,7 +204,7 @@ record WorldSnapshot(JsonNode doc) {
      * Every hand-over robot-sim kept, oldest first: its bounded log, and per robot the closest one (kept whatever the
      * log dropped), each once.
      */
-    List<Handover> handovers() {
+    public List<Handover> handovers() {
         Map<String, Handover> all = new LinkedHashMap<>();
         for (JsonNode c : commandOrigins().path("changes")) {
             Handover h = Handover.of(c);
