@@ -57,7 +57,7 @@ final class Edge implements DeviceModel, AutoCloseable {
 
     /** @param nodeName the node's name, given on every command to the fleet */
     Edge(FleetSettings settings, String nodeName, EventSink events, EdgeLog log) {
-        FleetThread fleet = new FleetThread();
+        FleetThread fleet = new FleetThread(nodeName);
         this.fleet = fleet;
         this.nodeName = nodeName;
         this.log = log;

@@ -54,11 +54,14 @@ final class FleetHttpClient implements AutoCloseable {
         this(ioThreads, maxConnections, timeoutMillis, EdgeNode.DEFAULT_NAME);
     }
 
-    /** @param nodeName the node's name, sent in {@value #NODE_HEADER} with every command (POST) */
+    /**
+     * @param nodeName the node's name, sent in {@value #NODE_HEADER} with every command (POST), and in the I/O
+     *                 threads' names ({@code edge-http-<node>-...})
+     */
     FleetHttpClient(int ioThreads, int maxConnections, long timeoutMillis, String nodeName) {
         this.timeoutMillis = timeoutMillis;
         this.nodeName = nodeName;
-        this.group = new NioEventLoopGroup(ioThreads, new DefaultThreadFactory("edge-http", true));
+        this.group = new NioEventLoopGroup(ioThreads, new DefaultThreadFactory("edge-http-" + nodeName, true));
         Bootstrap bootstrap = new Bootstrap().group(group).channel(NioSocketChannel.class)
                 .option(ChannelOption.TCP_NODELAY, true)
                 .option(ChannelOption.SO_KEEPALIVE, true)

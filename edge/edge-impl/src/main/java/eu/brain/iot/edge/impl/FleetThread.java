@@ -14,11 +14,16 @@ import java.util.concurrent.TimeUnit;
  */
 final class FleetThread implements Executor {
 
-    private final ScheduledExecutorService executor = new ScheduledThreadPoolExecutor(1, r -> {
-        Thread t = new Thread(r, "edge-fleet");
-        t.setDaemon(true);
-        return t;
-    });
+    private final ScheduledExecutorService executor;
+
+    /** @param nodeName the node's name, in the thread's ({@code edge-fleet-<node>}: several edges in one JVM apart) */
+    FleetThread(String nodeName) {
+        executor = new ScheduledThreadPoolExecutor(1, r -> {
+            Thread t = new Thread(r, "edge-fleet-" + nodeName);
+            t.setDaemon(true);
+            return t;
+        });
+    }
 
     @Override
     public void execute(Runnable task) {

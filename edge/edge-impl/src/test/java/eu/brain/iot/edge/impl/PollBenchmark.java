@@ -61,6 +61,8 @@ public final class PollBenchmark {
               --moving F           share of robots kept moving: one per docking column, back and forth
                                    between corridor and storage (default 0.1; 0 = every robot idle)
               --seed N             which docking columns move (default 1)
+              --nodes N            N edges in this JVM, node K polling share K/N of the fleet (robot number
+                                   modulo N, the doors on node 1), as N fabric nodes sharing it (default 1)
               --sim-jar FILE       robot-sim jar (default robot-sim/target/robot-sim.jar)
               --sim-io-threads N   simulator HTTP threads (default: the simulator's, one per core)
               --sim-java-opts S    extra JVM options of the simulator process (default none)
@@ -100,9 +102,10 @@ public final class PollBenchmark {
         System.out.printf(Locale.ROOT, "poll-bench: %d cores (%s), %s %s, max heap %d MB; robot-sim %s%n",
                 Runtime.getRuntime().availableProcessors(), cpuModel(), System.getProperty("java.vm.name"),
                 System.getProperty("java.runtime.version"), Runtime.getRuntime().maxMemory() >> 20, o.simJar);
-        System.out.printf(Locale.ROOT, "settings: period %d ms, timeout %d ms, %d connections, %d HTTP thread(s); "
+        System.out.printf(Locale.ROOT, "settings: period %d ms, timeout %d ms, %d connections, %d HTTP thread(s)%s; "
                         + "warm-up %d s, measured %d s; %.0f%% of robots moving%n", o.periodMillis, o.timeoutMillis,
-                o.connections, o.ioThreads, o.warmup, o.duration, 100 * o.moving);
+                o.connections, o.ioThreads, o.nodes == 1 ? "" : " per edge, " + o.nodes + " edges",
+                o.warmup, o.duration, 100 * o.moving);
         List<Result> results = new ArrayList<>();
         for (int robots : o.robots) {
             try {
@@ -145,23 +148,37 @@ public final class PollBenchmark {
             FleetSettings settings = FleetSettings.of(sim.base.toString(), List.of(), List.of(), o.periodMillis,
                     o.timeoutMillis, o.connections, o.ioThreads, 3, Math.max(8_000, o.periodMillis));
             long started = System.nanoTime();
-            try (Edge edge = new Edge(settings, sink, EdgeLog.stderr())) {
-                awaitFirstRound(edge, robots);
-                int devices = edge.providers().size();
-                System.out.printf(Locale.ROOT, "edge: %,d devices (robots and doors), %,d answers after %.1f s; "
-                        + "warming up %d s%n", devices, edge.pollStats().answered(),
-                        (System.nanoTime() - started) / 1e9, o.warmup);
+            try (SharedFleetEdges edges = SharedFleetEdges.start(settings, o.nodes, sink)) {
+                edges.awaitFirstRound(robots);
+                int devices = edges.devices();
+                System.out.printf(Locale.ROOT, "%s: %,d devices (robots and doors), %,d answers after %.1f s; "
+                        + "warming up %d s%n", o.nodes == 1 ? "edge" : o.nodes + " edges, each its share",
+                        devices, edges.merged().answered(), (System.nanoTime() - started) / 1e9, o.warmup);
                 TimeUnit.SECONDS.sleep(o.warmup);
 
                 Cpu before = Cpu.now(sim.process);
+                long[] nodeCpuBefore = edges.threadCpuNanos();
                 long eventsBefore = sink.total.sum();
-                edge.resetPollStats();
+                edges.resetPollStats();
                 TimeUnit.SECONDS.sleep(o.duration);
-                PollStats.Snapshot s = edge.pollStats();
+                PollStats.Snapshot s = edges.merged();
+                List<PollStats.Snapshot> perNode = edges.nodes().stream().map(n -> n.edge().pollStats()).toList();
+                long[] nodeCpuAfter = edges.threadCpuNanos();
                 Cpu after = Cpu.now(sim.process);
                 long events = sink.total.sum() - eventsBefore;
                 Result r = new Result(robots, devices, o.periodMillis, s, events, before, after, loadStart, loadAverage());
                 r.print(sink);
+                if (o.nodes > 1) {
+                    for (int i = 0; i < perNode.size(); i++) {
+                        PollStats.Snapshot n = perNode.get(i);
+                        System.out.printf(Locale.ROOT, "  %s (share %d/%d): %,d devices, %,.0f polls/s, on time %.2f%%, "
+                                        + "late %,d, failed %,d, skipped %,d; |interval - period| p99 %.1f ms; its edge's "
+                                        + "threads %.1f%% of one core%n", edges.nodes().get(i).name(), i + 1, o.nodes,
+                                edges.nodes().get(i).edge().providers().size(), n.pollsPerSecond(),
+                                100 * n.onTimeShare(), n.late(), n.failed(), n.skipped(), n.deviationP99Millis(),
+                                r.percentOfCore(nodeCpuBefore[i], nodeCpuAfter[i]));
+                    }
+                }
                 return r;
             }
         } finally {
@@ -286,17 +303,6 @@ public final class PollBenchmark {
 
     private static char cell(List<String> rows, int x, int y) {
         return y < rows.size() && x < rows.get(y).length() ? rows.get(y).charAt(x) : '#';
-    }
-
-    private static void awaitFirstRound(Edge edge, int robots) throws InterruptedException {
-        long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-        while (edge.pollStats().answered() < robots) {
-            if (System.nanoTime() > deadline) {
-                throw new IllegalStateException("the edge did not get " + robots + " answers within 120 s: "
-                        + edge.pollStats());
-            }
-            TimeUnit.MILLISECONDS.sleep(100);
-        }
     }
 
     static String loadAverage() {
@@ -432,9 +438,9 @@ public final class PollBenchmark {
                 if (cpu < 0) {
                     continue;
                 }
-                if (t.getThreadName().startsWith("edge-fleet")) {
+                if (t.getThreadName().startsWith("edge-fleet-")) {
                     fleet += cpu;
-                } else if (t.getThreadName().startsWith("edge-http")) {
+                } else if (t.getThreadName().startsWith("edge-http-")) {
                     http += cpu;
                 }
             }
@@ -529,6 +535,7 @@ public final class PollBenchmark {
         int ioThreads = 1;
         double moving = 0.1;
         long seed = 1;
+        int nodes = 1;
         Path simJar;
         int simIoThreads;
         String simJavaOpts = "";
@@ -573,6 +580,7 @@ public final class PollBenchmark {
                         }
                     }
                     case "--seed" -> o.seed = number(flag, v, 0, Integer.MAX_VALUE);
+                    case "--nodes" -> o.nodes = number(flag, v, 1, 64);
                     case "--sim-jar" -> jar = v;
                     case "--sim-io-threads" -> o.simIoThreads = number(flag, v, 1, 64);
                     case "--sim-java-opts" -> o.simJavaOpts = v;
