@@ -39,6 +39,8 @@ final class NodeGroup {
         /** CPU time and fabric figures of its earlier lives (before a kill), added to the current one's. */
         private Duration cpuEarlier = Duration.ZERO;
         private FabricStats statsEarlier;
+        /** The logs of its earlier lives, oldest first. */
+        private final List<java.nio.file.Path> logsEarlier = new ArrayList<>();
         private long endNanos = -1;
         private Long killedAtMs;
         private Long restartedAtMs;
@@ -135,6 +137,16 @@ final class NodeGroup {
 
     List<Member> members() {
         return members;
+    }
+
+    /** Every node's logs, each node's lives in order: node1's first. */
+    List<java.nio.file.Path> logs() {
+        List<java.nio.file.Path> logs = new ArrayList<>();
+        for (Member m : members) {
+            logs.addAll(m.logsEarlier);
+            logs.add(m.node.log());
+        }
+        return logs;
     }
 
     /** The only node, or node1. */
@@ -243,6 +255,7 @@ final class NodeGroup {
         m.cpuEarlier = m.cpuEarlier.plus(m.cpuThisLife());
         m.statsEarlier = m.statsEarlier == null ? m.stats : m.statsEarlier.plus(m.stats);
         m.stats = null;
+        m.logsEarlier.add(m.node.log());
         java.nio.file.Path log = m.spec.folder().resolve("node-restarted.log");
         m.node = FabricNode.start(root, m.configDir, m.spec.httpPort(), log, m.spec.name());
         m.cpu0 = Duration.ZERO;

@@ -57,7 +57,7 @@ final class ReportWriter {
         f.put("doorBoundCartsPerWarehouseHourBatched",
                 Figures.doorBoundCartsPerHour(doors, Math.max(1, end.robotCount()), end.stepMillis()));
         f.put("fleetBoundCartsPerWarehouseHour", FleetBound.cartsPerHour(start.doc(), end.stepMillis()));
-        TrafficFigures.put(f, run.nodeLog());
+        TrafficFigures.put(f, run.nodeLogs());
         f.put("waitShare", Figures.waitShare(start, end));
         f.put("robotInFrontDetections", end.nearMisses() - start.nearMisses());
         TreeMap<Long, Long> waits = Figures.waits(start, end);
@@ -151,10 +151,11 @@ final class ReportWriter {
      *                         could not be read
      * @param nodeCpuMs        the nodes' CPU time during the run, summed
      * @param nodeLog          the node's log (node1's with several)
+     * @param nodeLogs         every log of every node (each life of each node), where the traffic figures are read
      * @param nodes            with several nodes, each node's figures; empty for one node alone
      */
     record Run(List<String> arguments, Options options, WorldSnapshot start, WorldSnapshot end, Verdict verdict,
                long wallMs, long nodeStartMs, long deliveredAfterMs, BusStats bus, long nodeCpuMs,
-               List<String> faultLog, Path nodeLog, List<NodeReport> nodes) {
+               List<String> faultLog, Path nodeLog, List<Path> nodeLogs, List<NodeReport> nodes) {
     }
 }

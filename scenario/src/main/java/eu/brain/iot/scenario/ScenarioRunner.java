@@ -247,7 +247,7 @@ final class ScenarioRunner {
         checks.addAll(extra);
         Verdict verdict = new Verdict(List.copyOf(checks));
         ReportWriter.Run run = new ReportWriter.Run(arguments, options, start, now, verdict, wallMs,
-                nodeStartNanos / 1_000_000, deliveredAfter, bus, cpuMs, faults.log(), node.log(),
+                nodeStartNanos / 1_000_000, deliveredAfter, bus, cpuMs, faults.log(), node.log(), nodes.logs(),
                 nodes.fabricOfNodes() ? nodes.reports() : List.of());
         ReportWriter.write(options.report(), ReportWriter.report(run));
         Summary.print(out, run);
