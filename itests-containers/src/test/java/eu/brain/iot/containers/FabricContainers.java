@@ -104,7 +104,8 @@ final class FabricContainers implements AutoCloseable {
     }
 
     /**
-     * Several nodes started at once (as the nodes of one site would be), each as {@link #node} makes it.
+     * Several nodes started at once (as the nodes of one site would be), each as {@link #node} makes it with the
+     * fleet at {@code robot-sim:8090} (what each polls of it is its configuration's edge share).
      *
      * @param configFiles per node's name, the files for its configuration folder
      */
