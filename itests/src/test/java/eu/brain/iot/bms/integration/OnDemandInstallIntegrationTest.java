@@ -41,6 +41,9 @@ class OnDemandInstallIntegrationTest extends BmsTestBase {
         await().atMost(DEADLINE).until(() -> acks.size() == 1);
         assertThat(acks.get(0)).containsEntry("type", Order.class.getName()).containsEntry("seq", 0)
                 .containsEntry("ownClass", true);
+        // the installer journals a behaviour once its bundles started, so the behaviour may take its first event
+        // a moment before installed() lists it
+        await().atMost(DEADLINE).until(() -> !installer.installed().isEmpty());
         assertThat(installer.installed()).singleElement().satisfies(b -> {
             assertThat(b.symbolicName).isEqualTo(ORDERS);
             assertThat(b.reason).contains(Order.class.getName());
