@@ -117,15 +117,12 @@ class EventsAcrossContainersTest {
         } catch (ConditionTimeoutException e) {
             throw new AssertionError(e.getMessage() + "; node B counted "
                     + FederatedProbes.lastCounts(nodeB.logs(), run) + "\n--- node A's log, its end:\n"
-                    + tail(nodeA.logs()) + "\n--- node B's:\n" + tail(nodeB.logs()), e);
+                    + LogLineWait.tail(nodeA.logs(), 40) + "\n--- node B's:\n" + LogLineWait.tail(nodeB.logs(), 40),
+                    e);
         }
         return FederatedProbes.lastCounts(nodeB.logs(), run).orElseThrow();
     }
 
-    private static String tail(String log) {
-        String[] lines = log.split("\n");
-        return String.join("\n", java.util.Arrays.copyOfRange(lines, Math.max(0, lines.length - 40), lines.length));
-    }
 
     private static int occurrences(String text, String what) {
         return (int) Pattern.compile(Pattern.quote(what)).matcher(text).results().count();

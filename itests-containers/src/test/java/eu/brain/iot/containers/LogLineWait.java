@@ -52,8 +52,13 @@ final class LogLineWait extends AbstractWaitStrategy {
     }
 
     private static String tail(String logs) {
+        return tail(logs, TAIL_LINES);
+    }
+
+    /** The last {@code count} lines of a container's output (for the tests' failure messages too). */
+    static String tail(String logs, int count) {
         String[] lines = logs.split("\n");
-        return String.join("\n", java.util.Arrays.copyOfRange(lines, Math.max(0, lines.length - TAIL_LINES),
+        return String.join("\n", java.util.Arrays.copyOfRange(lines, Math.max(0, lines.length - count),
                 lines.length));
     }
 }

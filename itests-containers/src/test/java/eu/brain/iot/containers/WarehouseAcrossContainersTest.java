@@ -3,6 +3,7 @@ package eu.brain.iot.containers;
 import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
+import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.github.dockerjava.api.DockerClient;
 import eu.brain.iot.scenario.Judge;
@@ -91,8 +92,8 @@ class WarehouseAcrossContainersTest {
             return w.finished() ? w : null;
         });
         Verdict verdict = Judge.judge(end, WAIT_LIMIT_MS, Judge.RunEnd.FINISHED, end.warehouseMillis(), LEASE_MS);
-        verdict.checks().forEach(c -> System.out.println("warehouse in containers: " + (c.passed() ? "PASS  " : "FAIL  ")
-                + c.name() + ": " + c.detail()));
+        verdict.checks().forEach(c -> System.out.println("warehouse in containers: "
+                + (c.passed() ? "PASS  " : "FAIL  ") + c.name() + ": " + c.detail()));
         assertThat(verdict.failed()).as(diagnosis("failed checks: " + verdict.failed())).isEmpty();
         assertThat(end.lastCommanders()).as(diagnosis("the last commander of each robot ("
                 + onErrand + " was on an errand when node2 was killed)"))
@@ -139,7 +140,7 @@ class WarehouseAcrossContainersTest {
     /** A robot of node2's share that node2 commanded last and that has a mission running, or null. */
     private static String node2RobotOnErrand(WorldSnapshot w) {
         Map<String, String> last = w.lastCommanders();
-        for (com.fasterxml.jackson.databind.JsonNode r : w.doc().path("robots")) {
+        for (JsonNode r : w.doc().path("robots")) {
             String robot = r.path("id").asText();
             if (NODE2_ROBOTS.contains(robot) && NODE2.equals(last.get(robot))
                     && r.path("mission").path("state").asText("").equals("running")) {
@@ -178,12 +179,7 @@ class WarehouseAcrossContainersTest {
         } catch (IOException e) {
             world = "robot-sim's world unreadable: " + e.getMessage();
         }
-        return what + "\n" + world + "\n--- node1's log, its end:\n" + tail(node1.logs()) + "\n--- node2's:\n"
-                + tail(node2.logs());
-    }
-
-    private static String tail(String log) {
-        String[] lines = log.split("\n");
-        return String.join("\n", java.util.Arrays.copyOfRange(lines, Math.max(0, lines.length - 60), lines.length));
+        return what + "\n" + world + "\n--- node1's log, its end:\n" + LogLineWait.tail(node1.logs(), 60)
+                + "\n--- node2's:\n" + LogLineWait.tail(node2.logs(), 60);
     }
 }

@@ -312,7 +312,12 @@ final class Errands {
             drops.add(at);
             placed(robot);
         } else {
-            release(robot);
+            // the cart stands outside storage, not carried: back on the table for any robot to fetch (keeping the
+            // errand would have the robot "carry" a cart it does not hold, planned anew at every look)
+            if (e.drop() != null) {
+                drops.remove(e.drop());
+            }
+            errands.remove(robot);
         }
     }
 

@@ -93,6 +93,30 @@ class ErrandsTest {
     }
 
     @Test
+    void aCartOnTheFloorOutsideStorageGoesBackToTheTableAndOneInStorageCountsAsPlaced() {
+        Errands errands = new Errands(6);
+        Cell cartCell = new Cell(5, 8); // beside the doorway (6,8), which stays free
+        List<CartState> carts = new ArrayList<>(List.of(new CartState("cart0", cartCell, null),
+                new CartState("cart1", new Cell(7, 8), null)));
+        errands.seen("robot1", new Cell(1, 1), true);
+        errands.seen("robot2", new Cell(2, 1), true);
+        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND)).isPresent();
+        errands.lifted("robot1", cartCell, carriedBy(carts, 0, "robot1"), BAND).orElseThrow();
+
+        errands.cartDown("robot1", cartCell, BAND); // its pick failed: cart0 still stands on the table
+        assertThat(errands.of("robot1").leg()).as("robot1 carries nothing").isEqualTo(Errands.Leg.NONE);
+        assertThat(errands.claimed("cart0")).as("cart0 claimable again").isFalse();
+        assertThat(errands.claim("robot1", new Cell(6, 6), carts, BAND)).as("a cart to fetch again").isPresent();
+
+        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND)).isPresent();
+        Cell carriedFrom = errands.of("robot2").cartCell();
+        Cell drop = errands.lifted("robot2", carriedFrom, carriedBy(carts, 1, "robot2"), BAND).orElseThrow().drop();
+        errands.cartDown("robot2", drop, BAND); // put down in storage before the behaviour saw it placed
+        assertThat(errands.of("robot2").leg()).as("it heads home").isEqualTo(Errands.Leg.TO_DOCK);
+        assertThat(errands.delivered()).isEqualTo(1);
+    }
+
+    @Test
     void aRobotTakenOverCarryingACartCarriesItToStorageAndGetsAFreeDock() {
         Errands errands = new Errands(6);
         RobotState docked = robot("robot1", new Cell(1, 1), null, null, null);
