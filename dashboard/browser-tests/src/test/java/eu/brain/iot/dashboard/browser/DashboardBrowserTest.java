@@ -98,7 +98,7 @@ class DashboardBrowserTest {
         // a command the robot refuses (a wall is no destination): counted as refused, logged as such
         act("robot2", "goTo", "{\"x\":0,\"y\":0}");
         awaitCounter("commandsRefused", c -> c == 1);
-        assertThat(page.decisionOutcomes()).contains("refused");
+        await("the decision logged as refused").atMost(SHOWN).until(() -> page.decisionOutcomes().contains("refused"));
 
         sim.step(20);
         awaitPageShowsTheFleet();

@@ -7,7 +7,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 
-import org.openqa.selenium.By;
 import org.openqa.selenium.OutputType;
 import org.openqa.selenium.chrome.ChromeDriver;
 
@@ -49,16 +48,19 @@ final class DashboardPage {
 
     /** A counter as the page shows it, or -1 before it is shown. */
     long counter(String name) {
-        List<org.openqa.selenium.WebElement> e = driver.findElements(By.id("counter-" + name));
-        if (e.isEmpty() || e.get(0).getText().isBlank()) {
+        // read in one script: the page redraws its elements, so an element found by one call may be gone by the next
+        Object text = driver.executeScript("const e = document.getElementById(arguments[0]);"
+                + " return e ? e.textContent : null;", "counter-" + name);
+        if (text == null || text.toString().isBlank()) {
             return -1;
         }
-        return Long.parseLong(e.get(0).getText().trim());
+        return Long.parseLong(text.toString().trim());
     }
 
     /** {@code live}, {@code connecting} or {@code reconnecting}. */
     String connection() {
-        return driver.findElement(By.id("connection")).getAttribute("data-state");
+        return (String) driver.executeScript("const e = document.getElementById('connection');"
+                + " return e ? e.getAttribute('data-state') : null;");
     }
 
     String eventId() {
@@ -67,14 +69,17 @@ final class DashboardPage {
 
     /** The status a device's row in the device table shows, or empty. */
     Optional<String> rowStatus(String device) {
-        return driver.findElements(By.cssSelector("#devices tr[data-device='" + device + "']")).stream()
-                .map(e -> e.getAttribute("data-status")).findFirst();
+        Object status = driver.executeScript("const r = Array.from(document.querySelectorAll('#devices tr'))"
+                + ".find(r => r.getAttribute('data-device') === arguments[0]);"
+                + " return r ? r.getAttribute('data-status') : null;", device);
+        return Optional.ofNullable((String) status);
     }
 
-    /** The outcomes of the decisions in the log, newest first. */
+    /** The outcomes of the decisions in the log, newest first (read in one script, as the counters). */
+    @SuppressWarnings("unchecked")
     List<String> decisionOutcomes() {
-        return driver.findElements(By.cssSelector("#decisions tbody tr")).stream()
-                .map(e -> e.getAttribute("data-outcome")).toList();
+        return (List<String>) driver.executeScript("return Array.from(document.querySelectorAll("
+                + "'#decisions tbody tr')).map(r => r.getAttribute('data-outcome'));");
     }
 
     Object script(String js) {
