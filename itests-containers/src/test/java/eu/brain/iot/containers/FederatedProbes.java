@@ -65,8 +65,9 @@ final class FederatedProbes {
 
     /** The key (mode 600) and the probe bundle. */
     Map<String, Transferable> files() throws IOException {
-        return Map.of(KEY_PATH, Transferable.of(key, 0600),
-                PROBE_BUNDLE_PATH, Transferable.of(Files.readAllBytes(probeBundle), 0644));
+        Map<String, Transferable> files = new LinkedHashMap<>(keyFile());
+        files.put(PROBE_BUNDLE_PATH, Transferable.of(Files.readAllBytes(probeBundle), 0644));
+        return files;
     }
 
     /** A publishing run's configuration: its file name in the configuration folder (a factory configuration). */

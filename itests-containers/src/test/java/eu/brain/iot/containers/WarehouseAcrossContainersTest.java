@@ -94,11 +94,11 @@ class WarehouseAcrossContainersTest {
         Verdict verdict = Judge.judge(end, WAIT_LIMIT_MS, Judge.RunEnd.FINISHED, end.warehouseMillis(), LEASE_MS);
         verdict.checks().forEach(c -> System.out.println("warehouse in containers: "
                 + (c.passed() ? "PASS  " : "FAIL  ") + c.name() + ": " + c.detail()));
-        assertThat(verdict.failed()).as(diagnosis("failed checks: " + verdict.failed())).isEmpty();
-        assertThat(end.lastCommanders()).as(diagnosis("the last commander of each robot ("
+        assertThat(verdict.failed()).as(() -> diagnosis("failed checks: " + verdict.failed())).isEmpty();
+        assertThat(end.lastCommanders()).as(() -> diagnosis("the last commander of each robot ("
                 + onErrand + " was on an errand when node2 was killed)"))
                 .containsEntry("robot1", NODE1).containsEntry("robot2", NODE1).containsEntry("robot3", NODE1);
-        assertThat(end.handovers()).as(diagnosis("hand-overs from node2 to node1"))
+        assertThat(end.handovers()).as(() -> diagnosis("hand-overs from node2 to node1"))
                 .anyMatch(h -> h.from().equals(NODE2) && h.to().equals(NODE1) && h.robot().equals(onErrand));
         assertThat(node1.logs()).as("node1 took node2's robots")
                 .containsPattern("Device leases of node node1: took \\[.*robot(1|3)");

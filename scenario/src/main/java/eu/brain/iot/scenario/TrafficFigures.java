@@ -83,21 +83,18 @@ final class TrafficFigures {
         } catch (IOException | java.io.UncheckedIOException e) {
             return null;
         }
-        Counts done = null;
+        Counts done = Counts.NONE; // the instances before the current one
         Counts current = null;
         for (String line : lines) {
             Matcher m = LINE.matcher(line);
             if (m.find()) {
                 Counts next = Counts.of(m);
                 if (current != null && next.rounds() < current.rounds()) {
-                    done = (done == null ? Counts.NONE : done).plus(current);
+                    done = done.plus(current);
                 }
                 current = next;
             }
         }
-        if (current == null) {
-            return null;
-        }
-        return done == null ? current : done.plus(current);
+        return current == null ? null : done.plus(current);
     }
 }

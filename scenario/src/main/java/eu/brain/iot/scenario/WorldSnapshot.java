@@ -33,7 +33,7 @@ public record WorldSnapshot(JsonNode doc) {
         }
     }
 
-    public long step() {
+    long step() {
         return doc.path("step").asLong();
     }
 

@@ -168,16 +168,15 @@ public final class PollBenchmark {
                 long events = sink.total.sum() - eventsBefore;
                 Result r = new Result(robots, devices, o.periodMillis, s, events, before, after, loadStart, loadAverage());
                 r.print(sink);
-                if (o.nodes > 1) {
-                    for (int i = 0; i < perNode.size(); i++) {
-                        PollStats.Snapshot n = perNode.get(i);
-                        System.out.printf(Locale.ROOT, "  %s (share %d/%d): %,d devices, %,.0f polls/s, on time %.2f%%, "
-                                        + "late %,d, failed %,d, skipped %,d; |interval - period| p99 %.1f ms; its edge's "
-                                        + "threads %.1f%% of one core%n", edges.nodes().get(i).name(), i + 1, o.nodes,
-                                edges.nodes().get(i).edge().providers().size(), n.pollsPerSecond(),
-                                100 * n.onTimeShare(), n.late(), n.failed(), n.skipped(), n.deviationP99Millis(),
-                                r.percentOfCore(nodeCpuBefore[i], nodeCpuAfter[i]));
-                    }
+                for (int i = 0; o.nodes > 1 && i < perNode.size(); i++) {
+                    PollStats.Snapshot n = perNode.get(i);
+                    SharedFleetEdges.Node node = edges.nodes().get(i);
+                    System.out.printf(Locale.ROOT, "  %s (share %d/%d): %,d devices, %,.0f polls/s, on time "
+                                    + "%.2f%%, late %,d, failed %,d, skipped %,d; |interval - period| p99 %.1f ms; "
+                                    + "its edge's threads %.1f%% of one core%n", node.name(), i + 1, o.nodes,
+                            node.edge().providers().size(), n.pollsPerSecond(), 100 * n.onTimeShare(), n.late(),
+                            n.failed(), n.skipped(), n.deviationP99Millis(),
+                            r.percentOfCore(nodeCpuBefore[i], nodeCpuAfter[i]));
                 }
                 return r;
             }

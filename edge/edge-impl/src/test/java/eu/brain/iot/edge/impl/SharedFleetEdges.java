@@ -109,7 +109,8 @@ final class SharedFleetEdges implements AutoCloseable {
             long nanos = threads.getThreadCpuTime(t.getThreadId());
             for (int i = 0; i < nodes.size() && nanos >= 0; i++) {
                 String node = nodes.get(i).name();
-                if (t.getThreadName().equals("edge-fleet-" + node) || t.getThreadName().startsWith("edge-http-" + node + "-")) {
+                String name = t.getThreadName();
+                if (name.equals("edge-fleet-" + node) || name.startsWith("edge-http-" + node + "-")) {
                     cpu[i] += nanos;
                 }
             }
