@@ -150,6 +150,8 @@ class OnDemandInstallIntegrationTest extends BmsTestBase {
         assertThat(acks).extracting(a -> a.get("type")).containsExactlyInAnyOrder(Order.class.getName(),
                 Refill.class.getName());
         assertThat(bundles(ORDERS)).hasSize(1);
+        // the BMS tells of the install once the installer returned: the behaviour may have taken its events first
+        await().atMost(DEADLINE).until(() -> !alertsOf(BehaviourInstalled.class).isEmpty());
         assertThat(alertsOf(BehaviourInstalled.class)).hasSize(1);
     }
 
