@@ -3,7 +3,9 @@ package eu.brain.iot.behaviours.warehouse;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.Collections;
+import java.util.HashMap;
 import java.util.List;
+import java.util.Map;
 import java.util.Set;
 import java.util.function.Predicate;
 
@@ -27,10 +29,22 @@ public final class Grid {
 
     private final String[] rows;
     private final int width;
+    /** Every cell of each area, row by row ({@link #cells}): read for every robot at every look, so found once. */
+    private final Map<Integer, List<Cell>> byArea;
 
     private Grid(String[] rows) {
         this.rows = rows;
         this.width = rows.length == 0 ? 0 : rows[0].length();
+        Map<Integer, List<Cell>> found = new HashMap<>();
+        for (int y = 0; y < rows.length; y++) {
+            for (int x = 0; x < width; x++) {
+                Cell c = new Cell(x, y);
+                found.computeIfAbsent(area(c), a -> new ArrayList<>()).add(c);
+            }
+        }
+        Map<Integer, List<Cell>> frozen = new HashMap<>();
+        found.forEach((area, cells) -> frozen.put(area, List.copyOf(cells)));
+        this.byArea = Map.copyOf(frozen);
     }
 
     /**
@@ -82,18 +96,9 @@ public final class Grid {
         };
     }
 
-    /** @return every cell of an area, row by row, left to right */
+    /** @return every cell of an area, row by row, left to right (unmodifiable) */
     public List<Cell> cells(int area) {
-        List<Cell> found = new ArrayList<>();
-        for (int y = 0; y < rows.length; y++) {
-            for (int x = 0; x < width; x++) {
-                Cell c = new Cell(x, y);
-                if (area(c) == area) {
-                    found.add(c);
-                }
-            }
-        }
-        return found;
+        return byArea.getOrDefault(area, List.of());
     }
 
     /** @return the passable neighbours of a cell, in the order N, E, S, W */
@@ -169,6 +174,28 @@ public final class Grid {
             }
         }
         return null;
+    }
+
+    /**
+     * @return the steps from {@code from} to every cell reachable from it without entering a {@code blocked} cell
+     *         ({@code from} itself at 0)
+     */
+    public Map<Cell, Integer> distances(Cell from, Set<Cell> blocked) {
+        Map<Cell, Integer> dist = new HashMap<>();
+        ArrayDeque<Cell> queue = new ArrayDeque<>();
+        dist.put(from, 0);
+        queue.add(from);
+        while (!queue.isEmpty()) {
+            Cell x = queue.poll();
+            int next = dist.get(x) + 1;
+            for (Cell n : neighbours(x)) {
+                if (!dist.containsKey(n) && !blocked.contains(n)) {
+                    dist.put(n, next);
+                    queue.add(n);
+                }
+            }
+        }
+        return dist;
     }
 
     /** @return the length of the shortest path, or {@link Integer#MAX_VALUE} when there is none */

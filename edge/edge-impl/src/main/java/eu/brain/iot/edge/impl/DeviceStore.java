@@ -29,12 +29,20 @@ import eu.brain.iot.edge.model.api.ResourceValue;
  * of the writes; any thread reads. Values are immutable {@link ResourceValue}s in concurrent maps, so a reader
  * sees each resource whole, possibly one poll old. {@link Provider#last} and {@link Provider#downSince} belong
  * to the fleet thread.
+ * <p>
+ * Snapshots are read far more often than devices are polled (every robot behaviour's look reads the whole fleet),
+ * so each provider's snapshot, and the sorted list of providers, is built once per change and kept: a write ends by
+ * moving the provider's version on ({@link #changed}), and a snapshot built at an older version is built again. A
+ * snapshot built while a write runs carries the version before it, so the next read after the write builds it anew.
  */
 final class DeviceStore {
 
     private final Map<String, Provider> providers = new ConcurrentHashMap<>();
     private final List<Listener> listeners = new CopyOnWriteArrayList<>();
     private final ModelChanges changes;
+    /** Moves on whenever a provider is added or removed; written by the fleet thread only. */
+    private volatile long membership;
+    private volatile Kept<List<String>> sortedIds;
 
     DeviceStore(ModelChanges changes) {
         this.changes = changes;
@@ -52,11 +60,18 @@ final class DeviceStore {
         DeviceAnswer last;
         /** When it became unreachable ({@link System#currentTimeMillis()}). */
         long downSince;
+        /** Moves on after every write to the provider; written by the fleet thread only. */
+        volatile long version;
+        volatile Kept<ProviderSnapshot> snapshot;
 
         Provider(String id, DeviceKind kind) {
             this.id = id;
             this.kind = kind;
         }
+    }
+
+    /** A value built from the store at a version of it. */
+    private record Kept<T>(long version, T value) {
     }
 
     private record Listener(String provider, String service, ResourceListener target) {
@@ -67,13 +82,16 @@ final class DeviceStore {
     }
 
     void add(String id, DeviceKind kind) {
-        providers.putIfAbsent(id, new Provider(id, kind));
+        if (providers.putIfAbsent(id, new Provider(id, kind)) == null) {
+            membership++;
+        }
     }
 
     /** The provider leaves the model; {@code reason} says why (the bus hears it for a robot or a door). */
     void remove(String id, String reason) {
         Provider p = providers.remove(id);
         if (p != null) {
+            membership++;
             changes.removed(id, p.kind, reason);
         }
     }
@@ -98,6 +116,7 @@ final class DeviceStore {
         }
         p.services.clear();
         p.last = null;
+        changed(p);
         changes.moved(id);
     }
 
@@ -116,6 +135,7 @@ final class DeviceStore {
         }
         DeviceAnswer before = p.last;
         p.last = answer;
+        changed(p);
         changes.answered(providerId, before, answer, now);
     }
 
@@ -124,6 +144,7 @@ final class DeviceStore {
         Provider p = providers.get(providerId);
         if (p != null) {
             answered(p, now);
+            changed(p);
         }
     }
 
@@ -141,6 +162,7 @@ final class DeviceStore {
         Provider p = providers.get(providerId);
         if (p != null) {
             status(p, ResourceStatus.STALE, reason);
+            changed(p);
         }
     }
 
@@ -152,6 +174,7 @@ final class DeviceStore {
         }
         boolean news = p.status != ResourceStatus.UNREACHABLE;
         status(p, ResourceStatus.UNREACHABLE, reason);
+        changed(p);
         if (news) {
             p.downSince = System.currentTimeMillis();
             changes.unreachable(providerId, p.kind, reason, failures);
@@ -190,6 +213,11 @@ final class DeviceStore {
         }
     }
 
+    /** Ends a write to the provider: snapshots built before it are built again when next read. */
+    private static void changed(Provider p) {
+        p.version++; // one writer (the fleet thread): the increment is not contended
+    }
+
     private void fire(ResourceValue value) {
         for (Listener l : listeners) {
             if (l.wants(value)) {
@@ -204,9 +232,16 @@ final class DeviceStore {
         return () -> listeners.remove(l);
     }
 
+    /** @return every provider's snapshot, by id */
     List<ProviderSnapshot> snapshots() {
-        List<ProviderSnapshot> all = new ArrayList<>();
-        for (String id : new TreeMap<>(providers).keySet()) {
+        long version = membership;
+        Kept<List<String>> ids = sortedIds;
+        if (ids == null || ids.version() != version) {
+            ids = new Kept<>(version, List.copyOf(new TreeMap<>(providers).keySet()));
+            sortedIds = ids;
+        }
+        List<ProviderSnapshot> all = new ArrayList<>(ids.value().size());
+        for (String id : ids.value()) {
             snapshot(id).ifPresent(all::add);
         }
         return all;
@@ -217,11 +252,21 @@ final class DeviceStore {
         if (p == null) {
             return Optional.empty();
         }
+        long version = p.version;
+        Kept<ProviderSnapshot> kept = p.snapshot;
+        if (kept == null || kept.version() != version) {
+            kept = new Kept<>(version, build(p));
+            p.snapshot = kept;
+        }
+        return Optional.of(kept.value());
+    }
+
+    private static ProviderSnapshot build(Provider p) {
         Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
         new TreeMap<>(p.services).forEach((name, resources) -> services.put(name,
                 Collections.unmodifiableMap(new TreeMap<>(resources))));
-        return Optional.of(new ProviderSnapshot(p.id, p.kind.label, p.status, p.lastPoll, p.reason,
-                Collections.unmodifiableMap(services), p.kind.actions));
+        return new ProviderSnapshot(p.id, p.kind.label, p.status, p.lastPoll, p.reason,
+                Collections.unmodifiableMap(services), p.kind.actions);
     }
 
     Optional<ResourceValue> resource(String provider, String service, String resource) {

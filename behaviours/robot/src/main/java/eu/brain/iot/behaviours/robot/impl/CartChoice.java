@@ -1,6 +1,7 @@
 package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.List;
+import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -30,10 +31,14 @@ final class CartChoice {
      * @return the cart, or empty when none is left
      */
     static Optional<CartState> choose(Cell from, List<CartState> candidates, Grid grid, Order order) {
+        Map<Cell, Integer> reach = grid.distances(from, Set.of()); // one search for every cart
         CartState best = null;
         int bestSteps = Integer.MAX_VALUE;
         for (CartState c : candidates) {
-            int steps = grid.steps(from, c.cell(), Set.of());
+            int steps = reach.getOrDefault(c.cell(), Integer.MAX_VALUE);
+            if (steps == Integer.MAX_VALUE) {
+                continue; // walled in: no robot reaches it
+            }
             if (order == Order.FARTHEST) {
                 steps = -steps;
             }

@@ -1,8 +1,6 @@
 package eu.brain.iot.behaviours.robot.impl;
 
-import java.util.ArrayDeque;
 import java.util.Comparator;
-import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
@@ -35,7 +33,7 @@ final class StorageChoice {
      * @return the cell, or {@code null} when no free storage cell can be reached with a cart
      */
     static Cell choose(Grid grid, Cell from, Cell dock, Set<Cell> walls, List<Cell> inFlight) {
-        Map<Cell, Integer> steps = distances(grid, from, walls);
+        Map<Cell, Integer> steps = grid.distances(from, walls);
         List<Cell> free = grid.cells(Grid.STORAGE).stream().filter(steps::containsKey).toList();
         List<Cell> byTrip = free.stream().sorted(Comparator.comparingInt(
                 (Cell c) -> steps.get(c) + (dock == null ? 0 : c.distance(dock)))).toList();
@@ -55,7 +53,7 @@ final class StorageChoice {
             List<Cell> inFlight) {
         Set<Cell> blocked = new HashSet<>(walls);
         blocked.add(c);
-        Map<Cell, Integer> after = distances(grid, from, blocked);
+        Map<Cell, Integer> after = grid.distances(from, blocked);
         for (Cell f : free) {
             if (!f.equals(c) && !after.containsKey(f)) {
                 return false;
@@ -67,23 +65,5 @@ final class StorageChoice {
             }
         }
         return true;
-    }
-
-    /** @return the steps from {@code from} to every cell reachable without entering a {@code blocked} cell */
-    private static Map<Cell, Integer> distances(Grid grid, Cell from, Set<Cell> blocked) {
-        Map<Cell, Integer> dist = new HashMap<>();
-        ArrayDeque<Cell> queue = new ArrayDeque<>();
-        dist.put(from, 0);
-        queue.add(from);
-        while (!queue.isEmpty()) {
-            Cell x = queue.poll();
-            for (Cell n : grid.neighbours(x)) {
-                if (!dist.containsKey(n) && !blocked.contains(n)) {
-                    dist.put(n, dist.get(x) + 1);
-                    queue.add(n);
-                }
-            }
-        }
-        return dist;
     }
 }

@@ -1,0 +1,184 @@
+package eu.brain.iot.behaviours.robot.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.time.Instant;
+import java.util.LinkedHashMap;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
+import java.util.concurrent.CompletionStage;
+import java.util.concurrent.TimeUnit;
+
+import org.junit.jupiter.api.Test;
+
+import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.CommandLedger;
+import eu.brain.iot.behaviours.warehouse.FleetView;
+import eu.brain.iot.edge.api.CancelMissionCommand;
+import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.EdgeCommand;
+import eu.brain.iot.edge.api.GoToCommand;
+import eu.brain.iot.edge.model.api.DeviceModel;
+import eu.brain.iot.edge.model.api.ProviderSnapshot;
+import eu.brain.iot.edge.model.api.ResourceListener;
+import eu.brain.iot.edge.model.api.ResourceStatus;
+import eu.brain.iot.edge.model.api.ResourceValue;
+
+/**
+ * The robots' legs along their reserved paths ({@link TrafficControl}): a robot near the end of its leg gets the next
+ * one queued, so that it does not stand at the end while the fleet, the edge and the behaviour pass word; a robot
+ * blocked on its leg loses both. One robot on an open floor, its device model written by the test.
+ */
+class TrafficControlTest {
+
+    private static final String MAP = String.join("\n",
+            "############",
+            "#..........#",
+            "#..........#",
+            "############");
+
+    private final Model model = new Model();
+    private final RobotCommandsTest.Bus bus = new RobotCommandsTest.Bus();
+    private final CommandLedger ledger = new CommandLedger(bus, "t-");
+    private final RobotCommands commands = new RobotCommands(ledger);
+    private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
+            TimeUnit.SECONDS.toNanos(5));
+
+    @Test
+    void aRobotNearTheEndOfItsLegGetsItsNextLegQueuedInAStraightLineFromThatEnd() {
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.goal("robot1", new Cell(10, 2));
+        traffic.step();
+        GoToCommand first = lastGoTo();
+        Cell end = new Cell(first.x, first.y);
+        assertThat(inLine(new Cell(1, 1), end)).as("the first leg runs straight from the robot").isTrue();
+        answer(first);
+
+        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
+        model.robot(before.x(), before.y(), "running", 0, "running", end);
+        traffic.step();
+        GoToCommand next = lastGoTo();
+        assertThat(next).as("queued while it drives to the end of its leg").isNotSameAs(first);
+        Cell nextEnd = new Cell(next.x, next.y);
+        assertThat(inLine(end, nextEnd)).as("straight on from the end of the first leg").isTrue();
+        assertThat(nextEnd.distance(new Cell(10, 2))).isLessThan(end.distance(new Cell(10, 2)));
+        answer(next);
+
+        traffic.step();
+        assertThat(bus.sent).as("nothing more while both legs are on their way").hasSize(2);
+    }
+
+    @Test
+    void aRobotBlockedOnItsLegWithTheNextQueuedHasBothCancelled() {
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.goal("robot1", new Cell(10, 2));
+        traffic.step();
+        GoToCommand first = lastGoTo();
+        Cell end = new Cell(first.x, first.y);
+        answer(first);
+        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
+        model.robot(before.x(), before.y(), "running", 0, "running", end);
+        traffic.step();
+        answer(lastGoTo());
+
+        model.robot(before.x(), before.y(), "stopped", 1, "running", end); // a robot in front, three looks
+        for (int look = 0; look < 3; look++) {
+            traffic.step();
+        }
+        assertThat(bus.sent).hasSize(3).last().isInstanceOf(CancelMissionCommand.class);
+        answer(bus.sent.get(2));
+        assertThat(bus.sent).as("the running leg, then the queued one").hasSize(4).last()
+                .isInstanceOf(CancelMissionCommand.class);
+    }
+
+    @Test
+    void noLegIsQueuedPastTheErrandsGoal() {
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.goal("robot1", new Cell(4, 1));
+        traffic.step();
+        GoToCommand first = lastGoTo();
+        assertThat(new Cell(first.x, first.y)).isEqualTo(new Cell(4, 1));
+        answer(first);
+        model.robot(3, 1, "running", 0, "running", new Cell(4, 1));
+        traffic.step();
+        assertThat(bus.sent).as("it stops at its goal: to lift, place or dock").hasSize(1);
+    }
+
+    private GoToCommand lastGoTo() {
+        assertThat(bus.sent).isNotEmpty().last().isInstanceOf(GoToCommand.class);
+        return (GoToCommand) bus.sent.get(bus.sent.size() - 1);
+    }
+
+    /** The edge answers the command: the robot's next command may go out. */
+    private void answer(EdgeCommand c) {
+        CommandOutcome o = new CommandOutcome();
+        o.commandId = c.commandId;
+        o.deviceId = c.deviceId;
+        o.accepted = true;
+        commands.answered(o);
+    }
+
+    private static boolean inLine(Cell a, Cell b) {
+        return !a.equals(b) && (a.x() == b.x() || a.y() == b.y());
+    }
+
+    /** @return the cell one step from {@code end} towards {@code from} */
+    private static Cell step(Cell end, Cell from) {
+        return new Cell(end.x() + Integer.signum(from.x() - end.x()), end.y() + Integer.signum(from.y() - end.y()));
+    }
+
+    /** The edge's device model of one robot on {@link #MAP}. */
+    private static final class Model implements DeviceModel {
+        private ProviderSnapshot robot;
+
+        void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
+            Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
+            services.put("position", Map.of("x", value("position", "x", x), "y", value("position", "y", y),
+                    "area", value("position", "area", 0), "heading", value("position", "heading", "E")));
+            services.put("state", Map.of("state", value("state", "state", state),
+                    "detect", value("state", "detect", detect)));
+            if (missionState != null) {
+                services.put("mission", Map.of("type", value("mission", "type", "goto"),
+                        "state", value("mission", "state", missionState), "id", value("mission", "id", 1L),
+                        "goalX", value("mission", "goalX", goal.x()), "goalY", value("mission", "goalY", goal.y())));
+            }
+            robot = new ProviderSnapshot("robot1", "robot", ResourceStatus.OK, Instant.now(), null, services,
+                    Map.of());
+        }
+
+        private static ResourceValue value(String service, String resource, Object v) {
+            return new ResourceValue("robot1", service, resource, v, Instant.now(), ResourceStatus.OK);
+        }
+
+        @Override
+        public List<ProviderSnapshot> providers() {
+            return List.of(robot);
+        }
+
+        @Override
+        public Optional<ProviderSnapshot> provider(String providerId) {
+            return "robot1".equals(providerId) ? Optional.of(robot) : Optional.empty();
+        }
+
+        @Override
+        public Optional<ResourceValue> resource(String providerId, String service, String resource) {
+            if ("warehouse".equals(providerId) && "map".equals(service) && "rows".equals(resource)) {
+                return Optional.of(new ResourceValue("warehouse", "map", "rows", MAP, Instant.now(),
+                        ResourceStatus.OK));
+            }
+            return Optional.empty();
+        }
+
+        @Override
+        public Subscription subscribe(String providerId, String service, ResourceListener listener) {
+            throw new UnsupportedOperationException();
+        }
+
+        @Override
+        public CompletionStage<CommandOutcome> act(String providerId, String service, String action,
+                Map<String, Object> parameters) {
+            throw new UnsupportedOperationException();
+        }
+    }
+}
