@@ -181,10 +181,20 @@ public final class Grid {
      *         ({@code from} itself at 0)
      */
     public Map<Cell, Integer> distances(Cell from, Set<Cell> blocked) {
+        return distances(List.of(from), blocked);
+    }
+
+    /**
+     * @return the steps to every cell reachable without entering a {@code blocked} cell from the nearest of
+     *         {@code from} (each of them at 0)
+     */
+    public Map<Cell, Integer> distances(List<Cell> from, Set<Cell> blocked) {
         Map<Cell, Integer> dist = new HashMap<>();
         ArrayDeque<Cell> queue = new ArrayDeque<>();
-        dist.put(from, 0);
-        queue.add(from);
+        for (Cell c : from) {
+            dist.put(c, 0);
+            queue.add(c);
+        }
         while (!queue.isEmpty()) {
             Cell x = queue.poll();
             int next = dist.get(x) + 1;

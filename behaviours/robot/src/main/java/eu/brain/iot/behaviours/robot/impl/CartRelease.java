@@ -15,10 +15,8 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
  * at its dock, whoever carries what, while fewer than a number of robots per door go for carts; the planner's
- * passage claims take each door one way at a time. Through a single door, each robot claims the <em>farthest</em>
- * cart, so the warehouse ends with short errands rather than a few long ones crossing an idle door; with several
- * doors, the nearest (the farthest was across the warehouse, through another door: 120x40, 60 robots, 3 doors,
- * seeds 11 and 12, 34-36% of the bound instead of 58-63%).</li>
+ * passage claims take each door one way at a time. Each robot claims the cart with the longest errand behind its
+ * door first ({@link #order}), so the warehouse ends with short errands rather than a few long ones.</li>
  * </ul>
  * Released in waves, a robot carrying its cart back through the door also waits until every robot of the wave going
  * for a cart is down ({@link #mayCarryBack}), so that the door is crossed one way at a time. Released continuously,
@@ -65,10 +63,14 @@ final class CartRelease {
 
     /**
      * @param doors the warehouse's doors
-     * @return whether a robot claims the farthest waiting cart (else the nearest)
+     * @return which waiting cart a robot claims first ({@link CartChoice}): released continuously, the farthest
+     *         through a single door and the deepest behind its nearest door through several; in waves, the nearest
      */
-    boolean farthestFirst(int doors) {
-        return perDoor && doors == 1;
+    CartChoice.Order order(int doors) {
+        if (!perDoor) {
+            return CartChoice.Order.NEAREST;
+        }
+        return doors <= 1 ? CartChoice.Order.FARTHEST : CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR;
     }
 
     /**

@@ -221,7 +221,7 @@ final class Errands {
     }
 
     /**
-     * Claims the nearest waiting cart (released continuously through one door: the farthest, {@link CartRelease}) for a
+     * Claims a waiting cart (which one: {@link CartRelease#order}, {@link CartChoice}) for a
      * robot without an errand, when the wave is open ({@link #waveOpen}).
      */
     Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
@@ -229,9 +229,8 @@ final class Errands {
             return Optional.empty();
         }
         List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
-        CartChoice.Order order = release.farthestFirst(grid.cells(Grid.DOORWAY).size()) ? CartChoice.Order.FARTHEST
-                : CartChoice.Order.NEAREST;
-        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid, order);
+        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid,
+                release.order(grid.cells(Grid.DOORWAY).size()));
         if (chosen.isEmpty()) {
             return Optional.empty();
         }

@@ -225,10 +225,10 @@ final class TrafficControl {
             return next == null ? new int[0] : straight(end, next, new int[] {map.cell(end)});
         }
         int[] cells = straight(s.cell(), end, new int[0]);
-        if (cells.length == 0 || s.cell().distance(end) > QUEUE_CELLS || end.equals(goals.get(s.id()))) {
+        if (cells.length == 0 || cells.length >= window) {
             return cells;
         }
-        // near the end: it stands there for the step in which robot-sim ends the go-to, then drives its next leg
+        // it stands at the end for the step in which robot-sim ends the go-to, then drives its next leg, if queued
         cells = Arrays.copyOf(cells, cells.length + 1);
         cells[cells.length - 1] = map.cell(end);
         return next == null ? cells : straight(end, next, cells);

@@ -44,4 +44,31 @@ class CartChoiceTest {
         assertThat(CartChoice.choose(new Cell(1, 1), List.of(DOWN_THE_LANE, twin), ROOM, CartChoice.Order.NEAREST))
                 .contains(DOWN_THE_LANE);
     }
+
+    /**
+     * Two doors: the robot's door is the left one (nearer to it). Behind it, the deeper cart goes first, then the
+     * other; only then a cart behind the right door, though one stands nearer the robot by path than the deep one.
+     */
+    @Test
+    void theDeepestCartBehindTheDoorTheRobotReachesFirst() {
+        Grid twoDoors = Grid.parse(String.join("\n",
+                "###########",
+                "#d........#",
+                "##D#####D##",
+                "#uuuuuuuuu#",
+                "#uuuuuuuuu#",
+                "#uuuuuuuuu#",
+                "###########"));
+        CartState shallowLeft = new CartState("cart1", new Cell(2, 3), null);
+        CartState deepLeft = new CartState("cart2", new Cell(1, 5), null);
+        CartState shallowRight = new CartState("cart3", new Cell(8, 3), null);
+        Cell robot = new Cell(1, 1);
+        List<CartState> carts = List.of(shallowLeft, shallowRight, deepLeft);
+        CartChoice.Order order = CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR;
+        assertThat(CartChoice.choose(robot, carts, twoDoors, order)).contains(deepLeft);
+        assertThat(CartChoice.choose(robot, List.of(shallowLeft, shallowRight), twoDoors, order)).contains(shallowLeft);
+        assertThat(CartChoice.choose(robot, List.of(shallowRight), twoDoors, order)).contains(shallowRight);
+        assertThat(CartChoice.choose(robot, carts, twoDoors, CartChoice.Order.FARTHEST))
+                .as("the farthest by path is behind the other door").contains(shallowRight);
+    }
 }

@@ -22,7 +22,7 @@ class CartReleaseTest {
         assertThat(waves.open(4, false, 1)).as("the wave is full").isFalse();
         assertThat(waves.open(0, true, 1)).as("a robot of the wave carries its cart back").isFalse();
         assertThat(waves.open(4, false, 3)).as("a wave does not grow with the doors").isFalse();
-        assertThat(waves.farthestFirst(1)).isFalse();
+        assertThat(waves.order(1)).isEqualTo(CartChoice.Order.NEAREST);
     }
 
     @Test
@@ -34,8 +34,9 @@ class CartReleaseTest {
         assertThat(continuous.open(29, true, 3)).isTrue();
         assertThat(continuous.open(30, false, 3)).isFalse();
         assertThat(continuous.open(9, false, 0)).as("a map without a door counts as one").isTrue();
-        assertThat(continuous.farthestFirst(1)).as("through one door").isTrue();
-        assertThat(continuous.farthestFirst(3)).as("the farthest is through another door").isFalse();
+        assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
+        assertThat(continuous.order(3)).as("the farthest is through another door")
+                .isEqualTo(CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR);
     }
 
     @Test

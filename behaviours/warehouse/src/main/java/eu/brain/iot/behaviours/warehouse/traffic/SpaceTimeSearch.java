@@ -9,8 +9,16 @@ import java.util.function.IntPredicate;
  * of a passage's end while robots come out of it), and the window's end adds the
  * distance still to go, so the first node popped at the window's end is the best. Passages (lanes of one-cell width
  * joining two open cells, doorways) are driven one way at a time ({@link PassageClaims}), so no robot is ever caught
- * in one by a robot coming the other way. Arrays are
- * reused (stamped per search): owned by the planner's thread.
+ * in one by a robot coming the other way.
+ * <p>
+ * <b>A corner costs a step.</b> Robots drive legs in straight lines (a go-to per leg, {@code TrafficControl}), and
+ * robot-sim ends a go-to in the step after the robot arrives: the robot stands at every corner for that step. So a
+ * move in another direction than the move before it costs one more, and of two paths the one with fewer corners
+ * wins where they take as long in fact. The plan's later steps still put the robot a step ahead per corner; they
+ * are planned again every step, and the leg a robot drives is given exactly ({@code committed}). A node keeps the
+ * move it was first reached by, so a corner's cost is a good guess, not always the best.
+ * <p>
+ * Arrays are reused (stamped per search): owned by the planner's thread.
  */
 final class SpaceTimeSearch {
     private final TrafficMap map;
@@ -116,10 +124,14 @@ final class SpaceTimeSearch {
             }
             int nt = t + 1;
             int[] next = map.neighbours(cell);
+            int came = t == 0 ? -1 : parent[node] - (t - 1) * cells; // its cell a step before, -1 at the start
+            int lastMove = came < 0 || came == cell ? 0 : cell - came;
             for (int i = -1; i < next.length; i++) {
                 int n = i < 0 ? cell : next[i];
-                if (t < committed.length && n != committed[t]) {
-                    continue;
+                if (t < committed.length) {
+                    if (n != committed[t]) {
+                        continue;
+                    }
                 }
                 int child = nt * cells + n;
                 long cm = mark[child];
@@ -142,7 +154,8 @@ final class SpaceTimeSearch {
                 // a step in a passage costs one more: robots get out of passages rather than wait in them
                 // and two more where a passage lets robots out (they wait elsewhere, not in front of its end)
                 int cost = gNode + (n == goal && cell == goal ? 0 : 1) + (map.passage(n) >= 0 ? 1 : 0)
-                        + (outlet(robot, n, nt) ? 2 : 0);
+                        + (outlet(robot, n, nt) ? 2 : 0)
+                        + (t >= committed.length && n != cell && lastMove != 0 && n - cell != lastMove ? 1 : 0);
                 if (seenBefore && (cm & COST) <= cost) {
                     continue;
                 }

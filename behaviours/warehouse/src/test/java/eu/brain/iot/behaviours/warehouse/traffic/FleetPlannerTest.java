@@ -62,6 +62,40 @@ class FleetPlannerTest {
         assertThat(steps).as("steps until both stand at their goals").isBetween(1, 10);
     }
 
+    /**
+     * Robots drive straight legs and stop at every corner (robot-sim ends a go-to in the step after the robot
+     * arrives): of the shortest ways across a floor strewn with pillars, the planner takes one with two corners (it
+     * took one with six while a corner cost nothing).
+     */
+    @Test
+    void aRobotCrossingAFloorOfPillarsTakesAWayWithFewCorners() {
+        String floor = String.join("\n",
+                "############",
+                "#.....#....#",
+                "#.#.#...#..#",
+                "#...#...#..#",
+                "#.#...#....#",
+                "##..#......#",
+                "#..#.......#",
+                "############");
+        TrafficMap map = TrafficMap.parse(floor);
+        FleetPlanner planner = new FleetPlanner(map, 1, 16);
+        planner.robot(0, map.cell(1, 1), map.cell(10, 6), false, false);
+        planner.plan();
+        int[] path = planner.path(0);
+        int corners = 0;
+        int last = 0;
+        for (int t = 1; t < path.length; t++) {
+            int move = path[t] - path[t - 1];
+            if (move != 0 && last != 0 && move != last) {
+                corners++;
+            }
+            last = move == 0 ? last : move;
+        }
+        assertThat(path[path.length - 1]).as("at its goal within the window").isEqualTo(map.cell(10, 6));
+        assertThat(corners).isLessThanOrEqualTo(2);
+    }
+
     @Test
     void twoRobotsMeetingHeadOnInACorridorPassUsingAPocket() {
         String corridor = String.join("\n",
