@@ -9,6 +9,7 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
+import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
 import eu.brain.iot.behaviours.warehouse.Cell;
@@ -36,7 +37,10 @@ import eu.brain.iot.edge.api.GoToCommand;
  * the go-to there) gets its next leg while still on the way, {@value #QUEUE_CELLS} cells or fewer before that end:
  * robot-sim queues the go-to and starts it from that end, in a straight line again. The queued leg is part of the
  * robot's committed cells from then on; a robot cancelled while blocked loses both legs. A leg is never queued past
- * the errand's goal, where the robot stops to lift, place or dock.
+ * the errand's goal, where the robot stops to lift, place or dock. Legs are queued only when the look comes at least
+ * every {@link #QUEUE_LEGS_UP_TO_LOOK_MS} ms of wall time (the fleet at speed 8.3 or more): word took about that long
+ * to pass, so robots stood a step or more at every leg's end; with longer steps a queued leg, planned from a poll up
+ * to a step old, ran a step off its reservations more often than it saved one (behaviours/README.md, "Traffic").
  * <p>
  * Threads: owned by the robot fleet's thread ({@link RobotFleet}), which calls {@link #step} once per look; the
  * counters are read from any thread.
@@ -69,6 +73,10 @@ final class TrafficControl {
     private static final int BLOCKED_LOOKS = 3;
     /** How near the end of its leg a robot gets its next leg queued (cells). */
     static final int QUEUE_CELLS = 3;
+    /** The longest wall time between two looks at which legs are queued ahead. */
+    static final long QUEUE_LEGS_UP_TO_LOOK_MS = 60;
+    /** Whether legs are queued ahead ({@link #QUEUE_LEGS_UP_TO_LOOK_MS}). */
+    private final boolean queueLegs;
     /** The end of the leg queued after {@link #legEnd}, per robot, until the robot shows it as its mission. */
     private final Map<String, Cell> nextLeg = new HashMap<>();
 
@@ -80,8 +88,12 @@ final class TrafficControl {
         final AtomicLong cancelledLegs = new AtomicLong();
     }
 
-    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
+    /**
+     * @param lookNanos wall time between two looks (one warehouse step): legs are queued ahead when it is short
+     */
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, long lookNanos) {
         this.pendingNanos = pendingNanos;
+        this.queueLegs = lookNanos <= TimeUnit.MILLISECONDS.toNanos(QUEUE_LEGS_UP_TO_LOOK_MS);
         this.view = view;
         this.commands = commands;
         this.counts = new CommandLedgerCounts();
@@ -158,7 +170,7 @@ final class TrafficControl {
                 continue; // its next leg is queued (the edge may show it idle in between): nothing more
             } else if (s.reachable() && s.idle() && (legDone || !pending(s))) {
                 send(s, planner.path(r));
-            } else if (s.reachable() && s.running() && end != null && s.headingFor(end) && !end.equals(s.cell())
+            } else if (queueLegs && s.reachable() && s.running() && end != null && s.headingFor(end) && !end.equals(s.cell())
                     && s.cell().distance(end) <= QUEUE_CELLS && !end.equals(goals.get(s.id()))) {
                 queueNext(s, end, planner.path(r));
             }

@@ -42,8 +42,13 @@ class TrafficControlTest {
     private final RobotCommandsTest.Bus bus = new RobotCommandsTest.Bus();
     private final CommandLedger ledger = new CommandLedger(bus, "t-");
     private final RobotCommands commands = new RobotCommands(ledger);
-    private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
-            TimeUnit.SECONDS.toNanos(5));
+    /** Looks every 50 ms of wall time (speed 10): legs are queued ahead. */
+    private final TrafficControl traffic = traffic(50);
+
+    private TrafficControl traffic(long lookMillis) {
+        return new TrafficControl(new FleetView(model), commands, 16, TimeUnit.SECONDS.toNanos(5),
+                TimeUnit.MILLISECONDS.toNanos(lookMillis));
+    }
 
     @Test
     void aRobotNearTheEndOfItsLegGetsItsNextLegQueuedInAStraightLineFromThatEnd() {
@@ -90,6 +95,21 @@ class TrafficControlTest {
         answer(bus.sent.get(2));
         assertThat(bus.sent).as("the running leg, then the queued one").hasSize(4).last()
                 .isInstanceOf(CancelMissionCommand.class);
+    }
+
+    @Test
+    void withLooksFarApartInWallTimeNoLegIsQueued() {
+        TrafficControl slow = traffic(100); // speed 5
+        model.robot(1, 1, "stopped", 0, null, null);
+        slow.goal("robot1", new Cell(10, 2));
+        slow.step();
+        GoToCommand first = lastGoTo();
+        Cell end = new Cell(first.x, first.y);
+        answer(first);
+        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
+        model.robot(before.x(), before.y(), "running", 0, "running", end);
+        slow.step();
+        assertThat(bus.sent).as("the next leg once the robot shows the first one ended").hasSize(1);
     }
 
     @Test
