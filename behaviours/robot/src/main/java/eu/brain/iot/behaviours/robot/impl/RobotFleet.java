@@ -108,7 +108,7 @@ public final class RobotFleet {
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
                 ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4,
-                        pollNanos) : null;
+                        config.traffic_queue_legs()) : null;
         this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
         this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
     }

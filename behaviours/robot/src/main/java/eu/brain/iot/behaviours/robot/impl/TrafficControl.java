@@ -9,7 +9,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
 
 import eu.brain.iot.behaviours.warehouse.Cell;
@@ -37,10 +36,11 @@ import eu.brain.iot.edge.api.GoToCommand;
  * the go-to there) gets its next leg while still on the way, {@value #QUEUE_CELLS} cells or fewer before that end:
  * robot-sim queues the go-to and starts it from that end, in a straight line again. The queued leg is part of the
  * robot's committed cells from then on; a robot cancelled while blocked loses both legs. A leg is never queued past
- * the errand's goal, where the robot stops to lift, place or dock. Legs are queued only when the look comes at least
- * every {@link #QUEUE_LEGS_UP_TO_LOOK_MS} ms of wall time (the fleet at speed 8.3 or more): word took about that long
- * to pass, so robots stood a step or more at every leg's end; with longer steps a queued leg, planned from a poll up
- * to a step old, ran a step off its reservations more often than it saved one (behaviours/README.md, "Traffic").
+ * the errand's goal, where the robot stops to lift, place or dock, nor into a passage (a doorway, a lane), whose
+ * one-way claims follow the plan of the step the robot enters it. Legs are queued only when configured
+ * ({@code traffic.queue.legs}): a queued leg is planned from a poll up to a step old and runs off its reservations
+ * more often than a leg sent to a robot seen idle, which costs a door-bound warehouse more than the steps it saves;
+ * a fleet-bound one at high speed gains (behaviours/README.md, "Traffic").
  * <p>
  * Threads: owned by the robot fleet's thread ({@link RobotFleet}), which calls {@link #step} once per look; the
  * counters are read from any thread.
@@ -73,9 +73,7 @@ final class TrafficControl {
     private static final int BLOCKED_LOOKS = 3;
     /** How near the end of its leg a robot gets its next leg queued (cells). */
     static final int QUEUE_CELLS = 3;
-    /** The longest wall time between two looks at which legs are queued ahead. */
-    static final long QUEUE_LEGS_UP_TO_LOOK_MS = 60;
-    /** Whether legs are queued ahead ({@link #QUEUE_LEGS_UP_TO_LOOK_MS}). */
+    /** Whether legs are queued ahead. */
     private final boolean queueLegs;
     /** The end of the leg queued after {@link #legEnd}, per robot, until the robot shows it as its mission. */
     private final Map<String, Cell> nextLeg = new HashMap<>();
@@ -88,12 +86,10 @@ final class TrafficControl {
         final AtomicLong cancelledLegs = new AtomicLong();
     }
 
-    /**
-     * @param lookNanos wall time between two looks (one warehouse step): legs are queued ahead when it is short
-     */
-    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, long lookNanos) {
+    /** @param queueLegs whether a robot near the end of its leg gets its next leg queued */
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, boolean queueLegs) {
         this.pendingNanos = pendingNanos;
-        this.queueLegs = lookNanos <= TimeUnit.MILLISECONDS.toNanos(QUEUE_LEGS_UP_TO_LOOK_MS);
+        this.queueLegs = queueLegs;
         this.view = view;
         this.commands = commands;
         this.counts = new CommandLedgerCounts();
@@ -311,6 +307,11 @@ final class TrafficControl {
         int k = straightRun(path, n);
         if (k < 0) {
             return; // its plan says wait at the end of the leg
+        }
+        for (int i = n; i <= k; i++) {
+            if (map.passage(path[i]) >= 0) {
+                return; // through a door or a lane: sent when the robot is there, on the passage's claim of the step
+            }
         }
         Cell next = map.cell(path[k]);
         nextLeg.put(s.id(), next);

@@ -38,16 +38,22 @@ class TrafficControlTest {
             "#..........#",
             "############");
 
+    private static final String DOOR = String.join("\n",
+            "############",
+            "#..........#",
+            "#####D######",
+            "#..........#",
+            "############");
+
     private final Model model = new Model();
     private final RobotCommandsTest.Bus bus = new RobotCommandsTest.Bus();
     private final CommandLedger ledger = new CommandLedger(bus, "t-");
     private final RobotCommands commands = new RobotCommands(ledger);
-    /** Looks every 50 ms of wall time (speed 10): legs are queued ahead. */
-    private final TrafficControl traffic = traffic(50);
+    /** Legs queued ahead ({@code traffic.queue.legs}). */
+    private final TrafficControl traffic = traffic(true);
 
-    private TrafficControl traffic(long lookMillis) {
-        return new TrafficControl(new FleetView(model), commands, 16, TimeUnit.SECONDS.toNanos(5),
-                TimeUnit.MILLISECONDS.toNanos(lookMillis));
+    private TrafficControl traffic(boolean queueLegs) {
+        return new TrafficControl(new FleetView(model), commands, 16, TimeUnit.SECONDS.toNanos(5), queueLegs);
     }
 
     @Test
@@ -98,8 +104,8 @@ class TrafficControlTest {
     }
 
     @Test
-    void withLooksFarApartInWallTimeNoLegIsQueued() {
-        TrafficControl slow = traffic(100); // speed 5
+    void unlessConfiguredNoLegIsQueued() {
+        TrafficControl slow = traffic(false);
         model.robot(1, 1, "stopped", 0, null, null);
         slow.goal("robot1", new Cell(10, 2));
         slow.step();
@@ -110,6 +116,20 @@ class TrafficControlTest {
         model.robot(before.x(), before.y(), "running", 0, "running", end);
         slow.step();
         assertThat(bus.sent).as("the next leg once the robot shows the first one ended").hasSize(1);
+    }
+
+    @Test
+    void noLegIsQueuedIntoADoorway() {
+        model.map = DOOR;
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.goal("robot1", new Cell(5, 3));
+        traffic.step();
+        GoToCommand first = lastGoTo();
+        assertThat(new Cell(first.x, first.y)).as("along the wall to the door").isEqualTo(new Cell(5, 1));
+        answer(first);
+        model.robot(4, 1, "running", 0, "running", new Cell(5, 1));
+        traffic.step();
+        assertThat(bus.sent).as("through the door when it stands in front of it").hasSize(1);
     }
 
     @Test
@@ -151,6 +171,7 @@ class TrafficControlTest {
     /** The edge's device model of one robot on {@link #MAP}. */
     private static final class Model implements DeviceModel {
         private ProviderSnapshot robot;
+        private String map = MAP;
 
         void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
             Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
@@ -184,7 +205,7 @@ class TrafficControlTest {
         @Override
         public Optional<ResourceValue> resource(String providerId, String service, String resource) {
             if ("warehouse".equals(providerId) && "map".equals(service) && "rows".equals(resource)) {
-                return Optional.of(new ResourceValue("warehouse", "map", "rows", MAP, Instant.now(),
+                return Optional.of(new ResourceValue("warehouse", "map", "rows", map, Instant.now(),
                         ResourceStatus.OK));
             }
             return Optional.empty();
