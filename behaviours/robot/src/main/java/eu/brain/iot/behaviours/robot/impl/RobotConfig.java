@@ -50,13 +50,6 @@ public @interface RobotConfig {
      */
     int traffic_release_robots_per_door() default CartRelease.ROBOTS_PER_DOOR;
 
-    /**
-     * With the traffic planner: whether a robot near the end of its leg gets its next leg queued at once, rather than
-     * when it is seen standing at the end. Worth it where the fleet, not a door, binds and word takes a step or more
-     * to pass (120x40, 3 doors, speed 10); it costs a warehouse whose door binds (behaviours/README.md, "Traffic").
-     */
-    boolean traffic_queue_legs() default false;
-
     /** Steps of 0.5 s the traffic planner reserves ahead (longer than the map's longest one-cell passage). */
     int traffic_window() default 16;
 }

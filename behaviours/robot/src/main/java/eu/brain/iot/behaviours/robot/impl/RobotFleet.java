@@ -107,8 +107,7 @@ public final class RobotFleet {
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
-                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4,
-                        config.traffic_queue_legs()) : null;
+                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
         this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
         this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
     }

@@ -1,7 +1,6 @@
 package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.ArrayList;
-import java.util.Arrays;
 import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
@@ -30,17 +29,11 @@ import eu.brain.iot.edge.api.GoToCommand;
  * whom). A robot driving along a leg keeps it (the planner plans around it); a robot whose plan says wait gets no
  * go-to. An offline robot is an obstacle that holds its cell until it is seen again.
  * <p>
- * <b>Legs queued ahead.</b> A robot stands still at the end of each leg while the fleet tells the edge, the edge
- * tells the behaviour and the next go-to comes back: at speed 10 that took as many steps as the robots drove. So a
- * robot that drives on past the end of its leg (its plan moves it on right after the step robot-sim takes to end
- * the go-to there) gets its next leg while still on the way, {@value #QUEUE_CELLS} cells or fewer before that end:
- * robot-sim queues the go-to and starts it from that end, in a straight line again. The queued leg is part of the
- * robot's committed cells from then on; a robot cancelled while blocked loses both legs. A leg is never queued past
- * the errand's goal, where the robot stops to lift, place or dock, nor into a passage (a doorway, a lane), whose
- * one-way claims follow the plan of the step the robot enters it. Legs are queued only when configured
- * ({@code traffic.queue.legs}): a queued leg is planned from a poll up to a step old and runs off its reservations
- * more often than a leg sent to a robot seen idle, which costs a door-bound warehouse more than the steps it saves;
- * a fleet-bound one at high speed gains (behaviours/README.md, "Traffic").
+ * A robot stands at the end of each leg for the step in which robot-sim ends the go-to (and longer, while the fleet
+ * tells the edge, the edge this class, and the next go-to comes back): that step is among the cells it is committed
+ * to, so that its plan after the leg starts where it really is. Its next leg is sent when it is seen standing there;
+ * a leg queued in robot-sim before would be planned from a poll up to a step old and run off its reservations more
+ * often than it saved a step (BENCHMARKS.md, "With the traffic planner").
  * <p>
  * Threads: owned by the robot fleet's thread ({@link RobotFleet}), which calls {@link #step} once per look; the
  * counters are read from any thread.
@@ -71,12 +64,6 @@ final class TrafficControl {
     private final Map<String, Integer> blockedLooks = new HashMap<>();
     /** Looks a robot on a leg may stand behind another before its leg is cancelled and planned again. */
     private static final int BLOCKED_LOOKS = 3;
-    /** How near the end of its leg a robot gets its next leg queued (cells). */
-    static final int QUEUE_CELLS = 3;
-    /** Whether legs are queued ahead. */
-    private final boolean queueLegs;
-    /** The end of the leg queued after {@link #legEnd}, per robot, until the robot shows it as its mission. */
-    private final Map<String, Cell> nextLeg = new HashMap<>();
 
     /** Counters the report reads (any thread). */
     static final class CommandLedgerCounts {
@@ -86,10 +73,8 @@ final class TrafficControl {
         final AtomicLong cancelledLegs = new AtomicLong();
     }
 
-    /** @param queueLegs whether a robot near the end of its leg gets its next leg queued */
-    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, boolean queueLegs) {
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
         this.pendingNanos = pendingNanos;
-        this.queueLegs = queueLegs;
         this.view = view;
         this.commands = commands;
         this.counts = new CommandLedgerCounts();
@@ -141,7 +126,6 @@ final class TrafficControl {
             if (!s.reachable()) {
                 wereOffline.add(s.id());
             }
-            takeQueuedLeg(s);
             Cell goal = goals.get(s.id());
             int at = map.cell(s.cell());
             planner.robot(r, at, goal == null ? FleetPlanner.NO_GOAL : map.cell(goal), s.carrying(), !s.reachable());
@@ -161,32 +145,9 @@ final class TrafficControl {
             blockedLooks.remove(s.id());
             Cell end = legEnd.get(s.id());
             boolean legDone = end == null || end.equals(s.cell());
-            int r = index.get(s.id());
-            if (nextLeg.containsKey(s.id())) {
-                continue; // its next leg is queued (the edge may show it idle in between): nothing more
-            } else if (s.reachable() && s.idle() && (legDone || !pending(s))) {
-                send(s, planner.path(r));
-            } else if (queueLegs && s.reachable() && s.running() && end != null && s.headingFor(end) && !end.equals(s.cell())
-                    && s.cell().distance(end) <= QUEUE_CELLS && !end.equals(goals.get(s.id()))) {
-                queueNext(s, end, planner.path(r));
+            if (s.reachable() && s.idle() && (legDone || !pending(s))) {
+                send(s, planner.path(index.get(s.id())));
             }
-        }
-    }
-
-    /**
-     * The robot shows the leg queued for it as its mission (or ended it): that leg is the one it drives now. A robot
-     * idle with a queued leg the edge should show by now lost it (refused, or cancelled): it is planned afresh.
-     */
-    private void takeQueuedLeg(RobotState s) {
-        Cell next = nextLeg.get(s.id());
-        if (next == null) {
-            return;
-        }
-        if (s.headingFor(next) || s.idle() && s.cell().equals(next)) {
-            legEnd.put(s.id(), next);
-            nextLeg.remove(s.id());
-        } else if (s.idle() && !pending(s)) {
-            nextLeg.remove(s.id());
         }
     }
 
@@ -224,38 +185,22 @@ final class TrafficControl {
             return new int[] {here, here};
         }
         Cell end = legEnd.get(s.id());
-        if (end == null || !s.headingFor(end) && !pending(s)) {
+        if (end == null || end.equals(s.cell()) || !s.headingFor(end) && !pending(s)) {
             return new int[0];
         }
-        Cell next = nextLeg.get(s.id());
-        if (end.equals(s.cell())) {
-            // arrived: robot-sim ends the go-to in the next step, then starts the queued leg, if any
-            return next == null ? new int[0] : straight(end, next, new int[] {map.cell(end)});
-        }
-        int[] cells = straight(s.cell(), end, new int[0]);
-        if (cells.length == 0 || cells.length >= window) {
-            return cells;
-        }
-        // it stands at the end for the step in which robot-sim ends the go-to, then drives its next leg, if queued
-        cells = Arrays.copyOf(cells, cells.length + 1);
-        cells[cells.length - 1] = map.cell(end);
-        return next == null ? cells : straight(end, next, cells);
-    }
-
-    /**
-     * @return {@code before} followed by the cells of the straight run from {@code from} (excluded) to {@code to},
-     *         at most {@link #window} cells in all; {@code before} alone when the two are not in a straight line
-     */
-    private int[] straight(Cell from, Cell to, int[] before) {
-        int dx = Integer.signum(to.x() - from.x());
-        int dy = Integer.signum(to.y() - from.y());
+        int dx = Integer.signum(end.x() - s.cell().x());
+        int dy = Integer.signum(end.y() - s.cell().y());
         if (dx != 0 && dy != 0) {
-            return before;
+            return new int[0];
         }
-        int n = Math.min(from.distance(to), window - before.length);
-        int[] cells = Arrays.copyOf(before, before.length + Math.max(0, n));
+        int n = Math.min(s.cell().distance(end), window);
+        // and the step in which robot-sim ends the go-to, at the end, when the window reaches it
+        int[] cells = new int[Math.min(n + 1, window)];
         for (int i = 0; i < n; i++) {
-            cells[before.length + i] = map.cell(from.x() + dx * (i + 1), from.y() + dy * (i + 1));
+            cells[i] = map.cell(s.cell().x() + dx * (i + 1), s.cell().y() + dy * (i + 1));
+        }
+        if (n < window) {
+            cells[n] = map.cell(end);
         }
         return cells;
     }
@@ -265,14 +210,10 @@ final class TrafficControl {
         legEnd.remove(s.id());
         legSince.put(s.id(), System.nanoTime());
         counts.cancelledLegs.incrementAndGet();
-        // robot-sim cancels the running go-to, then the queued one: else the queued leg would start from here
-        int legs = nextLeg.remove(s.id()) == null ? 1 : 2;
-        for (int i = 0; i < legs; i++) {
-            CancelMissionCommand cancel = new CancelMissionCommand();
-            cancel.deviceId = s.id();
-            cancel.missionType = RobotState.GOTO;
-            commands.send(cancel, "its leg is blocked by another robot: planned again");
-        }
+        CancelMissionCommand cancel = new CancelMissionCommand();
+        cancel.deviceId = s.id();
+        cancel.missionType = RobotState.GOTO;
+        commands.send(cancel, "its leg is blocked by another robot: planned again");
     }
 
     /** Whether the robot was sent on a leg so recently that the edge may not show the go-to yet. */
@@ -292,30 +233,6 @@ final class TrafficControl {
         }
         legEnd.put(s.id(), end);
         goTo(s, end);
-    }
-
-    /**
-     * Queues the robot's next leg when its plan, after its committed cells up to the end of its leg and the step
-     * robot-sim ends the go-to in, drives straight on from there.
-     */
-    private void queueNext(RobotState s, Cell end, int[] path) {
-        int at = map.cell(end);
-        int n = s.cell().distance(end) + 1; // path[n - 1] and path[n]: the end, arrived at and the go-to ended
-        if (n + 1 >= path.length || path[n - 1] != at || path[n] != at) {
-            return; // planned otherwise than the leg (a push): it ends the leg and is sent on from there
-        }
-        int k = straightRun(path, n);
-        if (k < 0) {
-            return; // its plan says wait at the end of the leg
-        }
-        for (int i = n; i <= k; i++) {
-            if (map.passage(path[i]) >= 0) {
-                return; // through a door or a lane: sent when the robot is there, on the passage's claim of the step
-            }
-        }
-        Cell next = map.cell(path[k]);
-        nextLeg.put(s.id(), next);
-        goTo(s, next);
     }
 
     /**

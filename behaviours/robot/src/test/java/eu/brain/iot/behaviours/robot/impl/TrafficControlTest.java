@@ -26,9 +26,9 @@ import eu.brain.iot.edge.model.api.ResourceStatus;
 import eu.brain.iot.edge.model.api.ResourceValue;
 
 /**
- * The robots' legs along their reserved paths ({@link TrafficControl}): a robot near the end of its leg gets the next
- * one queued, so that it does not stand at the end while the fleet, the edge and the behaviour pass word; a robot
- * blocked on its leg loses both. One robot on an open floor, its device model written by the test.
+ * The robots' legs along their reserved paths ({@link TrafficControl}): straight runs, the next sent once the robot
+ * stands at the end of the one before, a leg blocked for three looks cancelled. One robot on an open floor, its
+ * device model written by the test.
  */
 class TrafficControlTest {
 
@@ -38,26 +38,15 @@ class TrafficControlTest {
             "#..........#",
             "############");
 
-    private static final String DOOR = String.join("\n",
-            "############",
-            "#..........#",
-            "#####D######",
-            "#..........#",
-            "############");
-
     private final Model model = new Model();
     private final RobotCommandsTest.Bus bus = new RobotCommandsTest.Bus();
     private final CommandLedger ledger = new CommandLedger(bus, "t-");
     private final RobotCommands commands = new RobotCommands(ledger);
-    /** Legs queued ahead ({@code traffic.queue.legs}). */
-    private final TrafficControl traffic = traffic(true);
+    private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
+            TimeUnit.SECONDS.toNanos(5));
 
-    private TrafficControl traffic(boolean queueLegs) {
-        return new TrafficControl(new FleetView(model), commands, 16, TimeUnit.SECONDS.toNanos(5), queueLegs);
-    }
-
-    @Test
-    void aRobotNearTheEndOfItsLegGetsItsNextLegQueuedInAStraightLineFromThatEnd() {
+    /** The robot at (1,1) with its goal at (10,2) is sent on its first leg, which the edge accepts: its end. */
+    private Cell firstLeg() {
         model.robot(1, 1, "stopped", 0, null, null);
         traffic.goal("robot1", new Cell(10, 2));
         traffic.step();
@@ -65,84 +54,35 @@ class TrafficControlTest {
         Cell end = new Cell(first.x, first.y);
         assertThat(inLine(new Cell(1, 1), end)).as("the first leg runs straight from the robot").isTrue();
         answer(first);
+        return end;
+    }
 
+    @Test
+    void aRobotGetsItsNextLegOnlyOnceSeenStandingAtTheEndOfTheOneBefore() {
+        Cell end = firstLeg();
         Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
         model.robot(before.x(), before.y(), "running", 0, "running", end);
+        traffic.step();
+        assertThat(bus.sent).as("nothing while it drives its leg").hasSize(1);
+
+        model.robot(end.x(), end.y(), "stopped", 0, "finished", end);
         traffic.step();
         GoToCommand next = lastGoTo();
-        assertThat(next).as("queued while it drives to the end of its leg").isNotSameAs(first);
         Cell nextEnd = new Cell(next.x, next.y);
-        assertThat(inLine(end, nextEnd)).as("straight on from the end of the first leg").isTrue();
+        assertThat(inLine(end, nextEnd)).as("straight on from where it stands").isTrue();
         assertThat(nextEnd.distance(new Cell(10, 2))).isLessThan(end.distance(new Cell(10, 2)));
-        answer(next);
-
-        traffic.step();
-        assertThat(bus.sent).as("nothing more while both legs are on their way").hasSize(2);
     }
 
     @Test
-    void aRobotBlockedOnItsLegWithTheNextQueuedHasBothCancelled() {
-        model.robot(1, 1, "stopped", 0, null, null);
-        traffic.goal("robot1", new Cell(10, 2));
-        traffic.step();
-        GoToCommand first = lastGoTo();
-        Cell end = new Cell(first.x, first.y);
-        answer(first);
+    void aRobotBlockedOnItsLegForThreeLooksHasItCancelled() {
+        Cell end = firstLeg();
         Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
-        model.robot(before.x(), before.y(), "running", 0, "running", end);
+        model.robot(before.x(), before.y(), "stopped", 1, "running", end); // a robot in front
         traffic.step();
-        answer(lastGoTo());
-
-        model.robot(before.x(), before.y(), "stopped", 1, "running", end); // a robot in front, three looks
-        for (int look = 0; look < 3; look++) {
-            traffic.step();
-        }
-        assertThat(bus.sent).hasSize(3).last().isInstanceOf(CancelMissionCommand.class);
-        answer(bus.sent.get(2));
-        assertThat(bus.sent).as("the running leg, then the queued one").hasSize(4).last()
-                .isInstanceOf(CancelMissionCommand.class);
-    }
-
-    @Test
-    void unlessConfiguredNoLegIsQueued() {
-        TrafficControl slow = traffic(false);
-        model.robot(1, 1, "stopped", 0, null, null);
-        slow.goal("robot1", new Cell(10, 2));
-        slow.step();
-        GoToCommand first = lastGoTo();
-        Cell end = new Cell(first.x, first.y);
-        answer(first);
-        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
-        model.robot(before.x(), before.y(), "running", 0, "running", end);
-        slow.step();
-        assertThat(bus.sent).as("the next leg once the robot shows the first one ended").hasSize(1);
-    }
-
-    @Test
-    void noLegIsQueuedIntoADoorway() {
-        model.map = DOOR;
-        model.robot(1, 1, "stopped", 0, null, null);
-        traffic.goal("robot1", new Cell(5, 3));
         traffic.step();
-        GoToCommand first = lastGoTo();
-        assertThat(new Cell(first.x, first.y)).as("along the wall to the door").isEqualTo(new Cell(5, 1));
-        answer(first);
-        model.robot(4, 1, "running", 0, "running", new Cell(5, 1));
+        assertThat(bus.sent).as("two looks: it may still go on").hasSize(1);
         traffic.step();
-        assertThat(bus.sent).as("through the door when it stands in front of it").hasSize(1);
-    }
-
-    @Test
-    void noLegIsQueuedPastTheErrandsGoal() {
-        model.robot(1, 1, "stopped", 0, null, null);
-        traffic.goal("robot1", new Cell(4, 1));
-        traffic.step();
-        GoToCommand first = lastGoTo();
-        assertThat(new Cell(first.x, first.y)).isEqualTo(new Cell(4, 1));
-        answer(first);
-        model.robot(3, 1, "running", 0, "running", new Cell(4, 1));
-        traffic.step();
-        assertThat(bus.sent).as("it stops at its goal: to lift, place or dock").hasSize(1);
+        assertThat(bus.sent).hasSize(2).last().isInstanceOf(CancelMissionCommand.class);
     }
 
     private GoToCommand lastGoTo() {
@@ -171,7 +111,6 @@ class TrafficControlTest {
     /** The edge's device model of one robot on {@link #MAP}. */
     private static final class Model implements DeviceModel {
         private ProviderSnapshot robot;
-        private String map = MAP;
 
         void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
             Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
@@ -205,7 +144,7 @@ class TrafficControlTest {
         @Override
         public Optional<ResourceValue> resource(String providerId, String service, String resource) {
             if ("warehouse".equals(providerId) && "map".equals(service) && "rows".equals(resource)) {
-                return Optional.of(new ResourceValue("warehouse", "map", "rows", map, Instant.now(),
+                return Optional.of(new ResourceValue("warehouse", "map", "rows", MAP, Instant.now(),
                         ResourceStatus.OK));
             }
             return Optional.empty();
