@@ -39,7 +39,7 @@ import eu.brain.iot.eventing.api.EventBus;
  * What the robot model's extern functions do to the fleet, and the only place that sends robots commands: each
  * command is an edge command event on the bus with a commandId ({@link CommandLedger}), one robot's commands in
  * the order given ({@link RobotCommands}: the next once the edge answered the one before), and each outcome is
- * checked ({@link #outcome}): a refusal is logged with the robot and the reason, counted, sent again up to
+ * checked ({@link Refusals}): a refusal is logged with the robot and the reason, counted, sent again up to
  * {@code command.retries} times, then the errand is planned anew (the cart goes back to the claim table). Where
  * the errands go is the {@link Errands} table's; where the robots and carts are, the edge's device model's.
  * <p>
@@ -59,7 +59,6 @@ public final class RobotFleet {
     private final CommandLedger ledger;
     private final RobotCommands commands;
     private final Errands errands;
-    private final int retries;
     /** Owns the fleet's state: the binding's looks and events, and the extern functions' effects. */
     private final BindingThread thread;
     /** Per robot, the extern functions' effects handed to the fleet's thread and not run yet (any thread). */
@@ -78,9 +77,8 @@ public final class RobotFleet {
 
     /** The robots told to step aside, each until it is done waiting there. */
     private final SideSteps aside;
-    /** Refusals in a row per robot. */
-    private final Map<String, Integer> refusals = new HashMap<>();
-    private final AtomicLong replans = new AtomicLong();
+    /** What follows a refused command: sent again, or the errand planned anew. */
+    private final Refusals refusals;
     /** Go-tos sent to robots, along reserved paths or not. */
     private final AtomicLong goTos = new AtomicLong();
     /** The traffic planner's driver, or null when robot-sim plans the go-tos ({@code traffic} false). */
@@ -99,10 +97,14 @@ public final class RobotFleet {
         this.book = new DockBook(data == null ? null : data.toPath());
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
         this.commands = new RobotCommands(ledger);
-        this.retries = Math.max(0, config.command_retries());
         this.errands = new Errands(
                 config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
                         : CartRelease.waves(config.wave_robots()));
+        this.refusals = new Refusals(commands, ledger, config.command_retries(),
+                Refusals.ANSWER_TIMEOUT_NANOS, robot -> {
+            sentGoal.remove(robot);
+            errands.release(robot);
+        });
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
@@ -403,58 +405,15 @@ public final class RobotFleet {
         resume(robot, "after a failed " + type);
     }
 
-    /**
-     * An outcome arrived on the bus: when it answers one of this behaviour's commands and is a refusal, it is
-     * logged, counted, and the command sent again, or after {@code command.retries} refusals in a row the errand
-     * is planned anew.
-     */
+    /** An outcome arrived on the bus ({@link Refusals#outcome}). */
     void outcome(CommandOutcome o) {
-        CommandLedger.Sent sent = commands.answered(o);
-        if (sent == null) {
-            return;
-        }
-        String robot = sent.command().deviceId;
-        if (o.accepted) {
-            refusals.remove(robot);
-            return;
-        }
-        int n = refusals.merge(robot, 1, Integer::sum);
-        LOG.log(System.Logger.Level.WARNING, "{0} refused {1} ({2}): {3} (status {4}); refusal {5} in a row", robot,
-                o.command, sent.why(), o.reason, o.status, n);
-        if (sent.command() instanceof CancelMissionCommand) {
-            return; // nothing to cancel: the robot's go-to had ended
-        }
-        if (n <= retries) {
-            EdgeCommand again = RobotCommands.again(sent.command());
-            send(again, sent.why() + ", again");
-            return;
-        }
-        refusals.remove(robot);
-        replans.incrementAndGet();
-        sentGoal.remove(robot);
-        errands.release(robot);
-        LOG.log(System.Logger.Level.WARNING, "{0}: errand planned anew after {1} refusals", robot, n);
+        refusals.outcome(o);
     }
 
-    /**
-     * On the binding's look (its thread): a command without an outcome {@link #ANSWER_TIMEOUT_NANOS} after it was
-     * published counts as refused (in a fabric, the node that owned the robot may have died with it): sent again,
-     * or the errand planned anew, as for any refusal. An outcome that comes after all is not one of the ledger's
-     * any more, and is ignored.
-     */
+    /** On the binding's look: a command left without an outcome counts as refused ({@link Refusals}). */
     void expireUnanswered() {
-        for (String id : ledger.unanswered(ANSWER_TIMEOUT_NANOS)) {
-            CommandOutcome lost = new CommandOutcome();
-            lost.commandId = id;
-            lost.accepted = false;
-            lost.reason = "no outcome within " + TimeUnit.NANOSECONDS.toMillis(ANSWER_TIMEOUT_NANOS)
-                    + " ms of wall time (the node that owned the robot may have stopped)";
-            outcome(lost);
-        }
+        refusals.expireUnanswered();
     }
-
-    /** Wall time a command's outcome may take (the edge answers within its request timeout, 1 s by default). */
-    static final long ANSWER_TIMEOUT_NANOS = TimeUnit.SECONDS.toNanos(4);
 
     /** One look of the binding (its thread): the traffic planner plans and sends legs; figures logged now and then. */
     void trafficStep() {
@@ -478,7 +437,7 @@ public final class RobotFleet {
     }
 
     long replans() {
-        return replans.get();
+        return refusals.replans();
     }
 
     private void goTo(String robot, RobotState s, Cell goal, String why) {

@@ -128,7 +128,7 @@ class RobotCommandsTest {
         assertThat(ledger.unanswered(0)).containsExactly(lost.commandId);
         assertThat(ledger.unanswered(java.util.concurrent.TimeUnit.HOURS.toNanos(1))).isEmpty();
         CommandOutcome timedOut = new CommandOutcome();
-        timedOut.commandId = lost.commandId; // what RobotFleet.expireUnanswered makes of it
+        timedOut.commandId = lost.commandId; // what Refusals.expireUnanswered makes of it
         assertThat(queue.answered(timedOut)).isNotNull();
         assertThat(bus.sent).containsExactly(lost, next);
         assertThat(ledger.unanswered(0)).containsExactly(next.commandId);
