@@ -15,10 +15,8 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
  * at its dock, whoever carries what, while fewer than a number of robots per door go for carts; the planner's
- * passage claims take each door one way at a time. Through one door each robot claims the farthest cart first
- * ({@link #order}), so the warehouse ends with short errands rather than a few long ones; through several, the carts
- * are scheduled over the fleet so that the last errand ends soonest ({@link #scheduled}, {@link CartSchedule}), and a
- * robot the schedule gives no cart stays docked.</li>
+ * passage claims take each door one way at a time. Each robot claims the cart with the longest errand behind its
+ * door first ({@link #order}), so the warehouse ends with short errands rather than a few long ones.</li>
  * </ul>
  * Released in waves, a robot carrying its cart back through the door also waits until every robot of the wave going
  * for a cart is down ({@link #mayCarryBack}), so that the door is crossed one way at a time. Released continuously,
@@ -73,15 +71,6 @@ final class CartRelease {
             return CartChoice.Order.NEAREST;
         }
         return doors <= 1 ? CartChoice.Order.FARTHEST : CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR;
-    }
-
-    /**
-     * @param doors the warehouse's doors
-     * @return whether which cart each robot goes for is scheduled fleet-wide ({@link CartSchedule}): released
-     *         continuously through several doors, where the fleet rather than the doors bounds the warehouse
-     */
-    boolean scheduled(int doors) {
-        return perDoor && doors > 1;
     }
 
     /**

@@ -1,6 +1,5 @@
 package eu.brain.iot.behaviours.robot.impl;
 
-import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -53,10 +52,6 @@ final class Errands {
     private final Set<String> adopted = new HashSet<>();
     /** Storage cells given to a cart being carried there. */
     private final Set<Cell> drops = new HashSet<>();
-    /** Which cart each robot goes for, fleet-wide, when the release schedules. */
-    private final CartSchedule schedule = new CartSchedule();
-    /** This look's schedule, or {@code null} until asked ({@link #plan}). */
-    private Map<String, List<CartState>> plan;
     private int delivered;
 
     /** @param wave robots that may go for carts at once, in waves (at least 1) */
@@ -225,86 +220,24 @@ final class Errands {
         return errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).toList();
     }
 
-    /** Claims a waiting cart for a robot, no other robot known ({@link #claim(String, Cell, List, Grid, List)}). */
-    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
-        return claim(robot, at, carts, grid, List.of());
-    }
-
     /**
-     * Claims a waiting cart for a robot without an errand, when the wave is open ({@link #waveOpen}): the one the
-     * fleet's schedule gives it when the release schedules ({@link CartRelease#scheduled}, {@link CartSchedule}),
-     * else (or when the schedule gives it none now) the one {@link CartChoice} picks in the release's order.
-     *
-     * @param robots every robot now, for the schedule
+     * Claims a waiting cart (which one: {@link CartRelease#order}, {@link CartChoice}) for a
+     * robot without an errand, when the wave is open ({@link #waveOpen}).
      */
-    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid, List<RobotState> robots) {
+    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
         if (!waveOpen(grid)) {
             return Optional.empty();
         }
         List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
-        int doors = grid.cells(Grid.DOORWAY).size();
-        Optional<CartState> chosen = release.scheduled(doors)
-                ? Optional.ofNullable(plan(candidates, grid, robots).get(robot)).map(l -> l.get(0)) : Optional.empty();
-        if (chosen.isEmpty()) {
-            chosen = CartChoice.choose(at, candidates, grid, release.order(doors));
-        }
+        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid,
+                release.order(grid.cells(Grid.DOORWAY).size()));
         if (chosen.isEmpty()) {
             return Optional.empty();
         }
         CartState best = chosen.get();
         Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
         errands.put(robot, e);
-        plan = null;
         return Optional.of(e);
-    }
-
-    /**
-     * @param robots every robot now
-     * @return whether the robot, without an errand, has a cart of its own to go for: always, unless the release
-     *         schedules ({@link CartSchedule}) and the schedule gives every waiting cart to other robots
-     */
-    boolean scheduled(String robot, List<CartState> carts, Grid grid, List<RobotState> robots) {
-        if (!release.scheduled(grid.cells(Grid.DOORWAY).size())) {
-            return true;
-        }
-        List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
-        return plan(candidates, grid, robots).containsKey(robot);
-    }
-
-    /** A look at the fleet begins: the cart schedule is made anew when next asked. */
-    void newLook() {
-        plan = null;
-    }
-
-    /** This look's schedule of the waiting carts over the robots the edge reaches (made once, until a claim). */
-    private Map<String, List<CartState>> plan(List<CartState> waiting, Grid grid, List<RobotState> robots) {
-        if (plan == null) {
-            List<CartSchedule.Worker> workers = new ArrayList<>();
-            for (RobotState r : robots) {
-                Cell dock = docks.get(r.id());
-                if (dock != null && r.reachable()) {
-                    workers.add(new CartSchedule.Worker(r.id(), dock, freeIn(errands.get(r.id()), r, dock, grid)));
-                }
-            }
-            plan = schedule.plan(grid, waiting, workers);
-        }
-        return plan;
-    }
-
-    /** @return the estimated steps until the robot is back at its dock, its errand done */
-    private int freeIn(Errand e, RobotState r, Cell dock, Grid grid) {
-        int home = Math.max(0, schedule.steps(grid, dock, r.cell()));
-        if (e == null) {
-            return home;
-        }
-        return switch (e.leg()) {
-            case TO_CART -> {
-                int cart = Math.max(0, schedule.steps(grid, dock, e.cartCell()));
-                yield Math.max(0, cart - home) + cart + CartSchedule.HANDLING_STEPS;
-            }
-            case TO_STORAGE -> home + CartSchedule.HANDLING_STEPS / 2;
-            case TO_DOCK, NONE -> home;
-        };
     }
 
     /** The robot lifted its cart: it is given a storage cell, or none when no free one can be reached. */
@@ -399,7 +332,6 @@ final class Errands {
     /** The robot is back at its dock: no errand. */
     void docked(String robot) {
         errands.remove(robot);
-        plan = null;
     }
 
     /**

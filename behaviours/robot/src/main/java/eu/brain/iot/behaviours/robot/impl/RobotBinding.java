@@ -262,7 +262,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         }
         try {
             fleet.expireUnanswered();
-            fleet.lookBegins();
+            fleet.trafficStep();
             for (RobotState s : fleet.view().robots()) {
                 evaluate(s.id());
             }
@@ -317,7 +317,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             case "START" -> {
                 boolean waitsAtOpeningDoor = s.facesDoor() && !doorAheadClosed(s);
                 if (!waitsAtOpeningDoor && (e.goal() != null || e.leg() != Errands.Leg.NONE
-                        || fleet.mayStart(robot))) {
+                        || fleet.mayStart())) {
                     unloadLocation(in, area);
                 }
             }

@@ -251,7 +251,7 @@ public final class RobotFleet {
             e = errands.of(robot);
         }
         if (e.leg() == Errands.Leg.NONE) {
-            e = errands.claim(robot, s.cell(), view.carts(), grid.get(), view.robots()).orElse(e);
+            e = errands.claim(robot, s.cell(), view.carts(), grid.get()).orElse(e);
             if (e.leg() == Errands.Leg.TO_CART) {
                 LOG.log(System.Logger.Level.INFO, "{0} goes for {1} at {2}", robot, e.cart(), e.cartCell());
             }
@@ -364,14 +364,10 @@ public final class RobotFleet {
         return errands.mayCarryBack(robot, view.robots());
     }
 
-    /**
-     * @return whether the robot, without an errand, may set off now: a cart waits, the wave is open and the fleet's
-     *         schedule gives it a cart ({@link Errands#scheduled})
-     */
-    boolean mayStart(String robot) {
+    /** @return whether a robot without an errand may set off now: a cart waits and the wave is open */
+    boolean mayStart() {
         Optional<Grid> grid = view.grid();
-        return grid.isPresent() && errands.waveOpen(grid.get()) && workLeft()
-                && errands.scheduled(robot, view.carts(), grid.get(), view.robots());
+        return grid.isPresent() && errands.waveOpen(grid.get()) && workLeft();
     }
 
     /** The robot is docked: its errand is over. */
@@ -419,12 +415,8 @@ public final class RobotFleet {
         refusals.expireUnanswered();
     }
 
-    /**
-     * One look of the binding begins (its thread): the cart schedule is made anew when asked, the traffic planner
-     * plans and sends legs; figures logged now and then.
-     */
-    void lookBegins() {
-        errands.newLook();
+    /** One look of the binding (its thread): the traffic planner plans and sends legs; figures logged now and then. */
+    void trafficStep() {
         if (traffic == null) {
             return;
         }

@@ -37,9 +37,6 @@ class CartReleaseTest {
         assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
         assertThat(continuous.order(3)).as("the farthest is through another door")
                 .isEqualTo(CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR);
-        assertThat(continuous.scheduled(3)).as("several doors: the fleet bounds, the carts are scheduled").isTrue();
-        assertThat(continuous.scheduled(1)).as("one door bounds").isFalse();
-        assertThat(CartRelease.waves(4).scheduled(3)).as("waves: each robot its nearest").isFalse();
     }
 
     @Test
