@@ -14,10 +14,13 @@ import java.util.function.IntPredicate;
  * still never meets anyone, so every round ends with a plan in which no two robots' stays in a cell overlap or
  * follow each other without a free step between (robot-sim's rule).
  * <p>
- * <b>Who goes first</b>: robots driving along a leg sent earlier ({@link #committed}), robots inside a passage (they drive on through it, one way), then the robot that has gone longest without coming closer to its goal, then robots carrying a
- * cart, then the caller's bias ({@link #bias}, the door batches), then the lower index. A robot that makes no
- * progress thus rises until it is first, and the first robot gets its best path through everyone else's current
- * cells: that is why no robot waits for ever on a map {@link MapCheck} accepts (behaviours/README.md, "Traffic").
+ * <b>Who goes first</b>: robots driving along a leg sent earlier ({@link #committed}), robots inside a passage (they
+ * drive on through it, one way), the robots of a door's batch ({@link DoorBatches}: a doorway crossed one direction
+ * at a time), then the robot that has gone longest without coming closer to its goal, then robots carrying a cart,
+ * then the caller's bias ({@link #bias}), then the lower index. A robot that makes no progress thus rises until it
+ * is first (at a door, first of its batch, which comes within a bounded number of rounds), and the first robot gets
+ * its best path through everyone else's current cells: that is why no robot waits for ever on a map
+ * {@link MapCheck} accepts (behaviours/README.md, "Traffic").
  * <p>
  * Robots are numbered 0..n-1 by the caller. Not thread-safe: one thread (the behaviour's binding thread) owns a
  * planner and everything it returns.
@@ -37,6 +40,8 @@ public final class FleetPlanner {
     private final boolean[] carrying;
     private final boolean[] offline;
     private final int[] bias;
+    /** The door policy: a doorway crossed in batches, one direction at a time. */
+    private final DoorBatches doors;
     private final int[] stuck;
     private final int[] lastDistance;
     private final int[] lastGoal;
@@ -88,6 +93,7 @@ public final class FleetPlanner {
         carrying = new boolean[robots];
         offline = new boolean[robots];
         bias = new int[robots];
+        doors = new DoorBatches(map, robots);
         stuck = new int[robots];
         lastDistance = new int[robots];
         lastGoal = new int[robots];
@@ -212,6 +218,7 @@ public final class FleetPlanner {
                 hold(r);
             }
         }
+        int[] batch = doors.ranks(cell, goal, distances);
         int count = 0;
         for (int r = 0; r < n; r++) {
             if (cell[r] >= 0 && !offline[r]) {
@@ -224,6 +231,9 @@ public final class FleetPlanner {
             }
             if ((heading[a] != 0) != (heading[b] != 0)) {
                 return heading[a] != 0 ? -1 : 1; // robots in a passage first: they drive on through it
+            }
+            if (batch[a] != batch[b]) {
+                return Integer.compare(batch[b], batch[a]); // a door's batch: one direction at a time
             }
             if (stuck[a] != stuck[b]) {
                 return Integer.compare(stuck[b], stuck[a]);
