@@ -1,6 +1,8 @@
 package eu.brain.iot.behaviours.warehouse;
 
+import java.util.concurrent.CompletableFuture;
 import java.util.concurrent.Future;
+import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.ScheduledThreadPoolExecutor;
 import java.util.concurrent.TimeUnit;
@@ -31,11 +33,37 @@ public final class BindingThread implements AutoCloseable {
     }
 
     /**
-     * Starts the looks, once the binding is fully built: {@code look} runs on this thread once per period until the
-     * returned future is cancelled (or the thread closed).
+     * Starts the looks, once the binding is fully built: {@code look} runs on this thread once per period of wall
+     * time, from the start of one look to the start of the next (a fixed delay after each look would add the look's
+     * own time to every period, and the looks would fall behind the polls), until the returned future is cancelled
+     * (or the thread closed). A look that overruns its period is followed at once by
+     * the next, never by a burst of the looks it missed.
      */
     public Future<?> start(Runnable look) {
-        return executor.scheduleWithFixedDelay(look, periodNanos, periodNanos, TimeUnit.NANOSECONDS);
+        CompletableFuture<Void> looks = new CompletableFuture<>();
+        schedule(looks, look, periodNanos);
+        return looks;
+    }
+
+    private void schedule(CompletableFuture<Void> looks, Runnable look, long delayNanos) {
+        if (looks.isDone()) {
+            return;
+        }
+        try {
+            executor.schedule(() -> {
+                if (looks.isDone()) {
+                    return;
+                }
+                long start = System.nanoTime();
+                try {
+                    look.run();
+                } finally {
+                    schedule(looks, look, Math.max(0, start + periodNanos - System.nanoTime()));
+                }
+            }, delayNanos, TimeUnit.NANOSECONDS);
+        } catch (RejectedExecutionException e) {
+            looks.cancel(false); // the thread is closed: no more looks
+        }
     }
 
     /** @return the wall time between two looks, in nanoseconds */

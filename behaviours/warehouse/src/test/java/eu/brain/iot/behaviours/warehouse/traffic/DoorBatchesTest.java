@@ -10,14 +10,7 @@ import org.junit.jupiter.api.Test;
 /** A doorway crossed in batches, one direction at a time, the batch sized to the queue. */
 class DoorBatchesTest {
 
-    private static final String ROOMS = String.join("\n",
-            "#########",
-            "#.......#",
-            "#.......#",
-            "####D####",
-            "#.......#",
-            "#.......#",
-            "#########");
+    private static final String ROOMS = FleetPlannerTest.TWO_ROOMS;
 
     private final TrafficMap map = TrafficMap.parse(ROOMS);
     private final Distances distances = new Distances(map, 16);

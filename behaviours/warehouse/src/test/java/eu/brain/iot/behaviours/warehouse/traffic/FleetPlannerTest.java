@@ -113,16 +113,19 @@ class FleetPlannerTest {
         assertThat(steps).as("steps until both swapped ends").isBetween(6, 30);
     }
 
+    /** Two rooms joined by a door. */
+    static final String TWO_ROOMS = String.join("\n",
+            "#########",
+            "#.......#",
+            "#.......#",
+            "####D####",
+            "#.......#",
+            "#.......#",
+            "#########");
+
     @Test
     void aDoorIsCrossedBothWaysByQueues() {
-        String rows = String.join("\n",
-                "#########",
-                "#.......#",
-                "#.......#",
-                "####D####",
-                "#.......#",
-                "#.......#",
-                "#########");
+        String rows = TWO_ROOMS;
         TrafficMap map = TrafficMap.parse(rows);
         int[] start = new int[8];
         for (int i = 0; i < 4; i++) {
