@@ -46,7 +46,7 @@ public @interface RobotConfig {
 
     /**
      * With the traffic planner: robots per door that may go for carts at once (released continuously, each robot as
-     * soon as it is back at its dock: {@code CartRelease}).
+     * soon as it is back at its dock: {@code CartRelease}); through several doors twice as many per door.
      */
     int traffic_release_robots_per_door() default CartRelease.ROBOTS_PER_DOOR;
 

@@ -31,8 +31,8 @@ class CartReleaseTest {
         assertThat(continuous.open(0, true, 1)).isTrue();
         assertThat(continuous.open(9, true, 1)).isTrue();
         assertThat(continuous.open(10, true, 1)).as("ten robots per door").isFalse();
-        assertThat(continuous.open(29, true, 3)).isTrue();
-        assertThat(continuous.open(30, false, 3)).isFalse();
+        assertThat(continuous.open(59, true, 3)).as("through several doors twice as many").isTrue();
+        assertThat(continuous.open(60, false, 3)).isFalse();
         assertThat(continuous.open(9, false, 0)).as("a map without a door counts as one").isTrue();
         assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
         assertThat(continuous.order(3)).as("the farthest is through another door")
