@@ -36,8 +36,8 @@ public final class BindingThread implements AutoCloseable {
      * Starts the looks, once the binding is fully built: {@code look} runs on this thread once per period of wall
      * time, from the start of one look to the start of the next (a fixed delay after each look would add the look's
      * own time to every period, and the looks would fall behind the polls), until the returned future is cancelled
-     * (or the thread closed). A look that overruns its period is followed at once by
-     * the next, never by a burst of the looks it missed.
+     * (or the thread closed). A look that overruns its period is followed at once by the next, never by a burst of
+     * the looks it missed; a look that throws is followed by the next all the same.
      */
     public Future<?> start(Runnable look) {
         CompletableFuture<Void> looks = new CompletableFuture<>();

@@ -41,4 +41,18 @@ class BindingThreadTest {
         // a fixed delay after each look: 40 + 30 = 70 ms from start to start
         assertThat(meanMillis).as("mean time between the starts of two looks").isLessThan(55);
     }
+
+    @Test
+    void aLookThatThrowsIsFollowedByTheNext() {
+        List<Long> starts = new CopyOnWriteArrayList<>();
+        try (BindingThread thread = new BindingThread("test-binding", 1, 10)) {
+            thread.start(() -> {
+                starts.add(System.nanoTime());
+                if (starts.size() == 1) {
+                    throw new IllegalStateException("the first look fails");
+                }
+            });
+            await().atMost(Duration.ofSeconds(10)).until(() -> starts.size() >= 3);
+        }
+    }
 }
