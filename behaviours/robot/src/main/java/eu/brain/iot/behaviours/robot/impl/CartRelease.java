@@ -15,8 +15,7 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
  * at its dock, whoever carries what, while fewer than a number of robots per door (twice as many through each of
- * several doors) go for carts; the planner's
- * passage claims take each door one way at a time. Each robot claims the cart with the longest errand behind its
+ * several doors) go for carts; the planner's passage claims and door batches take each door one way at a time. Each robot claims the cart with the longest errand behind its
  * door first ({@link #order}), so the warehouse ends with short errands rather than a few long ones.</li>
  * </ul>
  * Released in waves, a robot carrying its cart back through the door also waits until every robot of the wave going
@@ -32,8 +31,8 @@ final class CartRelease {
     static final int ROBOTS_PER_DOOR = 10;
     /**
      * How many times {@link #ROBOTS_PER_DOOR} go through each of several doors: there the fleet, not the doors,
-     * bounds the warehouse, and robots kept docked at the start are time lost (120x40, 60 robots, 3 doors, at 10x
-     * real time, seeds 11-20: 65-86% of the bound, median 77%, with twice as many; 61-74% with 10 per door).
+     * bounds the warehouse, and robots kept docked at the start are time lost (BENCHMARKS.md, "With the traffic
+     * planner").
      */
     static final int SEVERAL_DOORS_FACTOR = 2;
 
