@@ -4,6 +4,7 @@ import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Comparator;
 import java.util.List;
+import java.util.stream.IntStream;
 
 /**
  * The door policy under the planner: a doorway is crossed in batches, one direction at a time. A robot queues at a
@@ -14,8 +15,7 @@ import java.util.List;
  * {@link #ROUNDS_PER_ROBOT} rounds per robot plus {@link #SLACK_ROUNDS}; then the door turns to the other side if
  * robots wait there, else a new batch forms on the same side. Without batches the planner's order goes to the robot
  * that waited longest, which at a door alternates the directions robot by robot: each change of direction leaves the
- * doorway empty while the last robot clears it and the first of the other side comes in (120x40, 60 robots, 3 doors:
- * 16% of the robots' time went to waiting within three cells of a door).
+ * doorway empty while the last robot clears it and the first of the other side comes in.
  * <p>
  * Why nobody waits for ever: a batch ends after a bounded number of rounds whatever happens to its robots, and the
  * door then turns to the other side whenever a robot waits there, so a queued robot is in a batch after at most two
@@ -55,7 +55,7 @@ final class DoorBatches {
                 isDoorway[map.passage(c)] = true;
             }
         }
-        this.doorways = java.util.stream.IntStream.range(0, isDoorway.length).filter(p -> isDoorway[p]).toArray();
+        this.doorways = IntStream.range(0, isDoorway.length).filter(p -> isDoorway[p]).toArray();
         this.open = new int[doorways.length];
         Arrays.fill(open, -1);
         this.roundsLeft = new int[doorways.length];
