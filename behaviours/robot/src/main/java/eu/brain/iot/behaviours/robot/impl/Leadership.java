@@ -9,8 +9,9 @@ import java.util.Map;
  * claimed once fleet-wide) and one traffic planner's reservation table. Every instance hears every other's
  * {@link RobotBehaviourAlive}; the instances heard within {@link #aliveMillis} are alive, and the one that started
  * first (then the lowest instance id) leads. An instance on a node that has the whole fleet leads at once; on a
- * fleet shared between nodes it first listens for {@link #aliveMillis}, so that an instance starting beside one that
- * already drives the fleet never drives it too. When the leader stops beating (its node died), the next one leads
+ * fleet shared between nodes it first listens for {@link #LISTEN_PERIODS} alive periods, so that an instance starting
+ * beside one that already drives the fleet never drives it too: the other's beats reach it only once its own interest
+ * in them has crossed the fabric, which one alive period did not always cover. When the leader stops beating (its node died), the next one leads
  * after {@link #aliveMillis}, and takes the robots over as a behaviour started again does.
  * <p>
  * Not thread-safe: its owner ({@link FleetLeadership}) calls it under its lock.
@@ -24,9 +25,14 @@ final class Leadership {
     private static final Comparator<Instance> ELDEST = Comparator.comparingLong(Instance::startedMillis)
             .thenComparing(Instance::id);
 
+    /** Alive periods a new instance on a shared fleet listens before it leads when it hears nobody. */
+    static final int LISTEN_PERIODS = 3;
+
     private final Instance self;
     private final long aliveMillis;
     private final long startedNanos;
+    /** Whether another instance was ever heard (its listening is then over). */
+    private boolean heardAny;
     /** The other instances and when each was last heard (nanos). */
     private final Map<String, Heard> others = new HashMap<>();
 
@@ -46,6 +52,7 @@ final class Leadership {
     void heard(Instance other, long nowNanos) {
         if (!other.id().equals(self.id())) {
             others.put(other.id(), new Heard(other, nowNanos));
+            heardAny = true; // the fabric brings the others' beats here: no more listening
         }
     }
 
@@ -62,7 +69,8 @@ final class Leadership {
                 best = h.instance();
             }
         }
-        if (best == self && !wholeFleetHere && others.isEmpty() && nowNanos - startedNanos < window) {
+        boolean listening = !heardAny && nowNanos - startedNanos < LISTEN_PERIODS * window;
+        if (best == self && !wholeFleetHere && others.isEmpty() && listening) {
             return null; // still listening for an instance that drives the fleet already
         }
         return best;

@@ -18,10 +18,12 @@ class LeadershipTest {
     }
 
     @Test
-    void onASharedFleetANewInstanceListensForOneAlivePeriodThenLeadsWhenNobodyElseIsHeard() {
+    void onASharedFleetANewInstanceListensForSomeAlivePeriodsThenLeadsWhenNobodyElseIsHeard() {
         Leadership b = new Leadership(B, 2_000, 0);
-        assertThat(b.leader(false, 1_999 * MS)).isNull();
-        assertThat(b.leader(false, 2_001 * MS)).isEqualTo(B);
+        long listen = Leadership.LISTEN_PERIODS * 2_000L;
+        assertThat(b.leader(false, 2_001 * MS)).as("one alive period").isNull();
+        assertThat(b.leader(false, (listen - 1) * MS)).isNull();
+        assertThat(b.leader(false, (listen + 1) * MS)).isEqualTo(B);
     }
 
     @Test
