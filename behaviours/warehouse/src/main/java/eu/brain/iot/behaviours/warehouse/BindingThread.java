@@ -13,6 +13,9 @@ import java.util.concurrent.TimeUnit;
  */
 public final class BindingThread implements AutoCloseable {
 
+    private static final System.Logger LOG = System.getLogger(BindingThread.class.getName());
+
+    private final String name;
     private final ScheduledExecutorService executor;
     private final long periodNanos;
 
@@ -25,6 +28,7 @@ public final class BindingThread implements AutoCloseable {
         double s = speed > 0 ? speed : 1;
         this.periodNanos = Math.max(TimeUnit.MILLISECONDS.toNanos(5), (long) (TimeUnit.MILLISECONDS.toNanos(pollMillis)
                 / s));
+        this.name = name;
         this.executor = new ScheduledThreadPoolExecutor(1, r -> {
             Thread t = new Thread(r, name);
             t.setDaemon(true);
@@ -57,6 +61,9 @@ public final class BindingThread implements AutoCloseable {
                 long start = System.nanoTime();
                 try {
                     look.run();
+                } catch (RuntimeException e) {
+                    LOG.log(System.Logger.Level.WARNING, "a look of " + name + " failed; the next one comes all the"
+                            + " same", e);
                 } finally {
                     schedule(looks, look, Math.max(0, start + periodNanos - System.nanoTime()));
                 }

@@ -15,8 +15,9 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
  * at its dock, whoever carries what, while fewer than a number of robots per door (twice as many through each of
- * several doors) go for carts; the planner's passage claims and door batches take each door one way at a time. Each robot claims the cart with the longest errand behind its
- * door first ({@link #order}), so the warehouse ends with short errands rather than a few long ones.</li>
+ * several doors) go for carts; the planner's passage claims and door batches take each door one way at a time.
+ * Each robot claims the cart with the longest errand behind its door first ({@link #order}), so the warehouse ends
+ * with short errands rather than a few long ones.</li>
  * </ul>
  * Released in waves, a robot carrying its cart back through the door also waits until every robot of the wave going
  * for a cart is down ({@link #mayCarryBack}), so that the door is crossed one way at a time. Released continuously,

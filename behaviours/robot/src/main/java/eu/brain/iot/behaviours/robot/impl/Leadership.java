@@ -9,10 +9,11 @@ import java.util.Map;
  * claimed once fleet-wide) and one traffic planner's reservation table. Every instance hears every other's
  * {@link RobotBehaviourAlive}; the instances heard within {@link #aliveMillis} are alive, and the one that started
  * first (then the lowest instance id) leads. An instance on a node that has the whole fleet leads at once; on a
- * fleet shared between nodes it first listens for {@link #LISTEN_PERIODS} alive periods, so that an instance starting
- * beside one that already drives the fleet never drives it too: the other's beats reach it only once its own interest
- * in them has crossed the fabric, which one alive period did not always cover. When the leader stops beating (its node died), the next one leads
- * after {@link #aliveMillis}, and takes the robots over as a behaviour started again does.
+ * fleet shared between nodes it first listens for {@link #LISTEN_PERIODS} alive periods, so that an instance
+ * starting beside one that already drives the fleet never drives it too: the other's beats reach it only once its
+ * own interest in them has crossed the fabric, which one alive period did not always cover. When the leader stops
+ * beating (its node died), the next one leads after {@link #aliveMillis}, and takes the robots over as a behaviour
+ * started again does.
  * <p>
  * Not thread-safe: its owner ({@link FleetLeadership}) calls it under its lock.
  */

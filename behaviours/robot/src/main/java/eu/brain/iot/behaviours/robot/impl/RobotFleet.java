@@ -100,11 +100,11 @@ public final class RobotFleet {
         this.errands = new Errands(
                 config.traffic() ? CartRelease.continuous(config.traffic_release_robots_per_door())
                         : CartRelease.waves(config.wave_robots()));
-        this.refusals = new Refusals(commands, ledger, config.command_retries(),
-                Refusals.ANSWER_TIMEOUT_NANOS, robot -> {
-            sentGoal.remove(robot);
-            errands.release(robot);
-        });
+        this.refusals = new Refusals(commands, ledger, config.command_retries(), Refusals.ANSWER_TIMEOUT_NANOS,
+                robot -> {
+                    sentGoal.remove(robot);
+                    errands.release(robot);
+                });
         double speed = config.speed() > 0 ? config.speed() : 1;
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
