@@ -221,9 +221,6 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         public void missionEnded(RobotInput.MissionEnded m) {
             if (!m.failed() || "cancelled".equals(m.reason())) {
                 fleet.missionEnded(m.robot(), m.type(), m.goalX(), m.goalY());
-                if (!m.failed() && RobotState.GOTO.equals(m.type())) {
-                    fleet.goToFinished(m.robot());
-                }
             } else {
                 fleet.missionFailed(m.robot(), m.type(), m.goalX(), m.goalY(), m.reason());
             }

@@ -109,8 +109,7 @@ public final class RobotFleet {
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
-                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos,
-                        pollNanos * 4) : null;
+                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
         this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
         this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
     }
@@ -382,16 +381,6 @@ public final class RobotFleet {
         if (RobotState.GOTO.equals(type) && sent != null && goalX != null
                 && sent.goal().equals(new Cell(goalX, goalY == null ? -1 : goalY))) {
             sentGoal.remove(robot);
-        }
-    }
-
-    /**
-     * A go-to of the robot finished where it was sent (not cancelled, not failed): under the traffic planner its next
-     * leg may go at once ({@link TrafficControl#legEnded}).
-     */
-    void goToFinished(String robot) {
-        if (traffic != null) {
-            traffic.legEnded(robot);
         }
     }
 

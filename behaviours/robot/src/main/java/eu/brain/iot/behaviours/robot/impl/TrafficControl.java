@@ -31,10 +31,9 @@ import eu.brain.iot.edge.api.GoToCommand;
  * <p>
  * A robot stands at the end of each leg for the step in which robot-sim ends the go-to (and longer, while the fleet
  * tells the edge, the edge this class, and the next go-to comes back): that step is among the cells it is committed
- * to, so that its plan after the leg starts where it really is. Its next leg is sent when the edge reports the leg's
- * end ({@link #legEnded}), from the last round's plan when the robot is where and when that plan put it, else at the
- * next look; a leg queued in robot-sim before the end would be planned from a poll up to a step old and run off its
- * reservations more often than it saved a step (BENCHMARKS.md, "With the traffic planner").
+ * to, so that its plan after the leg starts where it really is. Its next leg is sent when it is seen standing there;
+ * a leg queued in robot-sim before would be planned from a poll up to a step old and run off its reservations more
+ * often than it saved a step (BENCHMARKS.md, "With the traffic planner").
  * <p>
  * Threads: owned by the robot fleet's thread ({@link RobotFleet}), which calls {@link #step} once per look; the
  * counters are read from any thread.
@@ -59,10 +58,6 @@ final class TrafficControl {
     /** When each robot was last sent on a leg (a go-to the edge has not shown yet counts as driven along). */
     private final Map<String, Long> legSince = new HashMap<>();
     private final long pendingNanos;
-    /** Wall time of a warehouse step (a look's period). */
-    private final long stepNanos;
-    /** When the last round planned. */
-    private long roundNanos;
     /** Robots seen offline and not sent on a leg since (the first leg after is logged: it shows they drive on). */
     private final Set<String> wereOffline = new HashSet<>();
     /** Looks in a row each robot on a leg stood behind another robot. */
@@ -76,17 +71,9 @@ final class TrafficControl {
         final AtomicLong rounds = new AtomicLong();
         final AtomicLong planNanos = new AtomicLong();
         final AtomicLong cancelledLegs = new AtomicLong();
-        /** Legs sent as soon as the leg before ended, from the last round's plan ({@link #legEnded}). */
-        final AtomicLong legsOnEnd = new AtomicLong();
     }
 
-    /**
-     * @param window       steps the planner looks ahead
-     * @param stepNanos    wall time of a warehouse step, the looks' period
-     * @param pendingNanos how long a go-to sent may not show in the edge's device model yet
-     */
-    TrafficControl(FleetView view, RobotCommands commands, int window, long stepNanos, long pendingNanos) {
-        this.stepNanos = stepNanos;
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
         this.pendingNanos = pendingNanos;
         this.view = view;
         this.commands = commands;
@@ -145,7 +132,6 @@ final class TrafficControl {
             planner.committed(r, onLeg(s));
         }
         long t0 = System.nanoTime();
-        roundNanos = t0;
         planner.plan();
         counts.planNanos.addAndGet(System.nanoTime() - t0);
         counts.rounds.incrementAndGet();
@@ -163,52 +149,6 @@ final class TrafficControl {
                 send(s, planner.path(index.get(s.id())));
             }
         }
-    }
-
-    /**
-     * The edge reports that the robot's go-to ended: when it stands idle at the end of the leg it was sent on, in
-     * time by the last round's plan (which reserved the step it stands there), and that plan moves it on right after,
-     * its next leg is sent now rather than at the next look (which comes up to a step later). Nothing is sent when
-     * the plan has it wait there, when it arrived later than planned, or when a robot stands on its next leg's cells
-     * now: the next look plans it from where everyone is.
-     */
-    void legEnded(String robot) {
-        Integer r = index.get(robot);
-        Cell end = legEnd.get(robot);
-        Optional<RobotState> state = view.robot(robot);
-        if (planner == null || r == null || end == null || state.isEmpty()) {
-            return;
-        }
-        RobotState s = state.get();
-        if (!s.reachable() || !s.idle() || !s.cell().equals(end)) {
-            return;
-        }
-        int[] path = planner.path(r);
-        int here = map.cell(end);
-        int arrival = 0;
-        while (arrival < path.length && path[arrival] != here) {
-            arrival++;
-        }
-        long stepsSinceRound = (System.nanoTime() - roundNanos) / stepNanos;
-        int from = arrival + 1; // the step it stands at the end while robot-sim ends the go-to
-        if (from + 1 >= path.length || path[from] != here || stepsSinceRound > from) {
-            return;
-        }
-        int k = straightRun(path, from);
-        if (k < 0) {
-            return;
-        }
-        Set<Integer> taken = new HashSet<>();
-        view.robots().stream().filter(o -> !o.id().equals(robot)).forEach(o -> taken.add(map.cell(o.cell())));
-        for (int i = from + 1; i <= k; i++) {
-            if (taken.contains(path[i])) {
-                return;
-            }
-        }
-        counts.legsOnEnd.incrementAndGet();
-        blockedLooks.remove(robot);
-        legEnd.put(robot, map.cell(path[k]));
-        goTo(s, map.cell(path[k]));
     }
 
     private void start(Grid grid, List<RobotState> robots) {
@@ -329,9 +269,8 @@ final class TrafficControl {
     String figures(long goTosSent) {
         long rounds = counts.rounds.get();
         return String.format(java.util.Locale.ROOT, "traffic: %d rounds, planning %.2f ms per round, %d go-tos sent,"
-                + " %d along reserved paths, %d robots held, %d legs cancelled (blocked), %d legs sent as the leg"
-                + " before ended", rounds, rounds == 0 ? 0 : counts.planNanos.get() / 1e6 / rounds, goTosSent,
-                counts.reservedGoTos.get(), planner == null ? 0 : planner.fallbacks(), counts.cancelledLegs.get(),
-                counts.legsOnEnd.get());
+                + " %d along reserved paths, %d robots held, %d legs cancelled (blocked)", rounds,
+                rounds == 0 ? 0 : counts.planNanos.get() / 1e6 / rounds, goTosSent, counts.reservedGoTos.get(),
+                planner == null ? 0 : planner.fallbacks(), counts.cancelledLegs.get());
     }
 }

@@ -43,14 +43,10 @@ class TrafficControlTest {
     private final CommandLedger ledger = new CommandLedger(bus, "t-");
     private final RobotCommands commands = new RobotCommands(ledger);
     private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
-            TimeUnit.SECONDS.toNanos(1), TimeUnit.SECONDS.toNanos(5));
+            TimeUnit.SECONDS.toNanos(5));
 
     /** The robot at (1,1) with its goal at (10,2) is sent on its first leg, which the edge accepts: its end. */
     private Cell firstLeg() {
-        return firstLeg(traffic);
-    }
-
-    private Cell firstLeg(TrafficControl traffic) {
         model.robot(1, 1, "stopped", 0, null, null);
         traffic.goal("robot1", new Cell(10, 2));
         traffic.step();
@@ -75,43 +71,6 @@ class TrafficControlTest {
         Cell nextEnd = new Cell(next.x, next.y);
         assertThat(inLine(end, nextEnd)).as("straight on from where it stands").isTrue();
         assertThat(nextEnd.distance(new Cell(10, 2))).isLessThan(end.distance(new Cell(10, 2)));
-    }
-
-    @Test
-    void aLegThatEndsInTimeIsFollowedAtOnceByTheNextFromTheLastPlan() {
-        Cell end = firstLeg();
-        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
-        model.robot(before.x(), before.y(), "running", 0, "running", end);
-        traffic.step(); // the plan: the rest of the leg, a step standing at its end, then on
-        model.robot(end.x(), end.y(), "stopped", 0, "finished", end);
-
-        traffic.legEnded("robot1");
-
-        assertThat(bus.sent).as("the next leg without waiting for a look").hasSize(2);
-        GoToCommand next = lastGoTo();
-        Cell nextEnd = new Cell(next.x, next.y);
-        assertThat(inLine(end, nextEnd)).as("straight on from where it stands").isTrue();
-        assertThat(nextEnd.distance(new Cell(10, 2))).isLessThan(end.distance(new Cell(10, 2)));
-        answer(next);
-        traffic.step();
-        assertThat(bus.sent).as("the next look sends it nothing more: it is on its way").hasSize(2);
-    }
-
-    @Test
-    void aLegThatEndsLaterThanPlannedWaitsForTheNextLook() {
-        TrafficControl late = new TrafficControl(new FleetView(model), commands, 16, 1,
-                TimeUnit.SECONDS.toNanos(5)); // a step of 1 ns: every leg ends later than its plan said
-        Cell end = firstLeg(late);
-        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
-        model.robot(before.x(), before.y(), "running", 0, "running", end);
-        late.step();
-        model.robot(end.x(), end.y(), "stopped", 0, "finished", end);
-
-        late.legEnded("robot1");
-
-        assertThat(bus.sent).as("its plan is stale: nothing until the next look").hasSize(1);
-        late.step();
-        assertThat(bus.sent).hasSize(2);
     }
 
     @Test
