@@ -27,7 +27,9 @@ import eu.brain.iot.eventing.api.EventBus;
  * <li>F is not blocked by R (F moves on, waits at a door, lifts or places a cart, or waits behind another robot):
  * R waits: it gets its own position, which its behaviour reads as "go on" once the way is clear;</li>
  * <li>F stands still with nothing to do (a robot parked in the way): F is sent to the nearest free cell off R's
- * path (a go-to the orchestrator sends itself; F's behaviour has no errand to disturb), and R waits;</li>
+ * path (a go-to the orchestrator sends itself; F's behaviour has no errand to disturb), and R waits; under the
+ * fleet's traffic planner ({@link FleetMode#traffic}) R only waits: the planner pushes F or plans R around it, and
+ * a go-to of the orchestrator's own would run off the reserved paths;</li>
  * <li>F faces R (head-on, which the fleet's own rules leave deadlocked): one of them yields, the robot without a
  * cart to the robot carrying one, else the robot with the higher number. The yielding robot gets the nearest free
  * cell off the other's path (searched through free cells; not a doorway; for a robot carrying a cart, not under
@@ -38,18 +40,23 @@ import eu.brain.iot.eventing.api.EventBus;
  * Each robot's answer depends only on the pair, so two robots that report the same meeting at different times
  * get answers that agree. Thread-safe: the view and ledger are; no other state.
  */
-@Component(service = CollisionGeometry.class)
+@Component(service = CollisionGeometry.class, configurationPid = FleetMode.PID)
 public final class CollisionGeometry {
 
     private static final System.Logger LOG = System.getLogger(CollisionGeometry.class.getName());
 
     private final FleetView view;
     private final CommandLedger ledger;
+    /** Whether the traffic planner drives the robots: no robot is sent anywhere from here. */
+    private final boolean traffic;
 
     @Activate
-    public CollisionGeometry(@Reference DeviceModel model, @Reference EventBus bus) {
+    public CollisionGeometry(@Reference DeviceModel model, @Reference EventBus bus, FleetMode mode) {
         this.view = new FleetView(model);
         this.ledger = new CommandLedger(bus, "orchestrator-");
+        this.traffic = mode.traffic();
+        LOG.log(System.Logger.Level.INFO, traffic ? "the traffic planner drives the robots: a robot parked in the way"
+                + " of another is left to it" : "a robot parked in the way of another is sent aside");
     }
 
     /**
@@ -71,7 +78,7 @@ public final class CollisionGeometry {
         }
         RobotState f = front.get();
         if (f.idle() && !f.running()) {
-            Cell aside = freeCellOffPath(grid.get(), f, r, robots);
+            Cell aside = traffic ? null : freeCellOffPath(grid.get(), f, r, robots);
             if (aside != null) {
                 LOG.log(System.Logger.Level.INFO, "{0} is parked in the way of {1}: sent to {2}", f.id(), r.id(),
                         aside);
