@@ -14,8 +14,9 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * robots go for carts at once, and none sets off while a robot of the wave still carries its cart, so the door is
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
- * at its dock, whoever carries what, while fewer than a number of robots per door (twice as many through each of
- * several doors) go for carts; the planner's passage claims and door batches take each door one way at a time.
+ * at its dock, while fewer than a number of robots per door (twice as many through each of several doors) go for
+ * carts and fewer than twice that number per door are out on an errand for a cart (going for one or carrying it);
+ * the planner's passage claims and door batches take each door one way at a time.
  * Each robot claims the cart with the longest errand behind its door first ({@link #order}), so the warehouse ends
  * with short errands rather than a few long ones.</li>
  * </ul>
@@ -36,6 +37,12 @@ final class CartRelease {
      * planner").
      */
     static final int SEVERAL_DOORS_FACTOR = 2;
+    /**
+     * How many times the robots per door may be out on an errand for a cart at once (going for one or carrying it):
+     * a fleet larger than the doors and aisles carry only crowds them, and the rest wait docked (120x40, 3 doors:
+     * 60 robots out at most, whatever the fleet's size; BENCHMARKS.md, "With the traffic planner").
+     */
+    static final int WORKING_FACTOR = 2;
 
     private final int robots;
     private final boolean perDoor;
@@ -60,15 +67,17 @@ final class CartRelease {
 
     /**
      * @param goingForCarts robots on their way to a cart now
-     * @param anyCarrying   whether some robot carries a cart to storage now
+     * @param carrying      robots carrying a cart to storage now
      * @param doors         the warehouse's doors (at least one counts)
      * @return whether a robot without an errand may claim a cart now
      */
-    boolean open(long goingForCarts, boolean anyCarrying, int doors) {
+    boolean open(long goingForCarts, long carrying, int doors) {
         if (!perDoor) {
-            return !anyCarrying && goingForCarts < robots;
+            return carrying == 0 && goingForCarts < robots;
         }
-        return goingForCarts < (long) robots * Math.max(1, doors) * (doors > 1 ? SEVERAL_DOORS_FACTOR : 1);
+        long perDoors = (long) robots * Math.max(1, doors);
+        return goingForCarts < perDoors * (doors > 1 ? SEVERAL_DOORS_FACTOR : 1)
+                && goingForCarts + carrying < perDoors * WORKING_FACTOR;
     }
 
     /**

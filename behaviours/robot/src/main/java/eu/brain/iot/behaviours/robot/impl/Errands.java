@@ -199,14 +199,14 @@ final class Errands {
      * has not started back: no robot comes up through the door against the robots going down) and fewer than a
      * wave's robots go for carts; once a robot lifts its cart, no new claim until every cart of the wave is placed in
      * storage, then the next wave goes down. Released continuously (the traffic planner), a robot may claim while
-     * fewer than its share of robots per door go for carts.
+     * fewer than its share of robots per door go for carts, and fewer than twice that share are out for carts.
      *
      * @param grid the map (its doors)
      * @return whether a robot without an errand may claim a cart now
      */
     boolean waveOpen(Grid grid) {
         long toCart = errands.values().stream().filter(e -> e.leg() == Leg.TO_CART).count();
-        boolean carrying = errands.values().stream().anyMatch(e -> e.leg() == Leg.TO_STORAGE);
+        long carrying = errands.values().stream().filter(e -> e.leg() == Leg.TO_STORAGE).count();
         return release.open(toCart, carrying, grid.cells(Grid.DOORWAY).size());
     }
 
@@ -292,6 +292,27 @@ final class Errands {
                 return false;
             }
         }
+    }
+
+    /**
+     * The robot carries its cart to a storage cell it can no longer reach around the carts on the floor (carts put
+     * down since walled that cell, or the robot, in; the traffic planner finds no path there and no go-to fails to
+     * say so): it is given another storage cell it can reach from where it stands ({@link #goalFailed}), and when
+     * there is none but it stands on a free storage cell, that cell: its cart is in storage either way.
+     *
+     * @return whether the errand changed
+     */
+    boolean walledIn(String robot, Cell at, Cell drop, List<CartState> carts, Grid grid) {
+        if (!goalFailed(robot, at, drop, carts, grid)) {
+            return false;
+        }
+        Errand e = errands.get(robot);
+        boolean free = carts.stream().noneMatch(c -> c.carriedBy() == null && c.cell().equals(at));
+        if (e.drop() == null && grid.area(at) == Grid.STORAGE && free && !drops.contains(at)) {
+            drops.add(at);
+            errands.put(robot, new Errand(robot, Leg.TO_STORAGE, e.cart(), e.cartCell(), at, e.dock()));
+        }
+        return true;
     }
 
     /**

@@ -109,7 +109,8 @@ public final class RobotFleet {
         long pollNanos = (long) (TimeUnit.MILLISECONDS.toNanos(config.poll_period_ms()) / speed);
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
-                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4) : null;
+                ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4,
+                        this::walledIn) : null;
         this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
         this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
     }
@@ -382,6 +383,22 @@ public final class RobotFleet {
                 && sent.goal().equals(new Cell(goalX, goalY == null ? -1 : goalY))) {
             sentGoal.remove(robot);
         }
+    }
+
+    /**
+     * Under the traffic planner: the robot carries its cart to a storage cell no path reaches around the carts any
+     * more ({@link TrafficControl#WALLED_IN_ROUNDS}); it is given another ({@link Errands#walledIn}) and goes on.
+     */
+    private void walledIn(String robot, Cell drop) {
+        Optional<RobotState> s = view.robot(robot);
+        Optional<Grid> grid = view.grid();
+        if (s.isEmpty() || grid.isEmpty() || !errands.walledIn(robot, s.get().cell(), drop, view.carts(), grid.get())) {
+            return;
+        }
+        Errands.Errand e = errands.of(robot);
+        LOG.log(System.Logger.Level.WARNING, "{0}: now to {1}", robot, e.drop() == null ? "a storage cell chosen as it"
+                + " goes" : e.drop().equals(s.get().cell()) ? "the storage cell it stands on" : e.drop());
+        resume(robot, "its storage cell walled in by carts");
     }
 
     /**

@@ -9,6 +9,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 import java.util.concurrent.atomic.AtomicLong;
+import java.util.function.BiConsumer;
 
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView;
@@ -64,6 +65,14 @@ final class TrafficControl {
     private final Map<String, Integer> blockedLooks = new HashMap<>();
     /** Looks a robot on a leg may stand behind another before its leg is cancelled and planned again. */
     private static final int BLOCKED_LOOKS = 3;
+    /**
+     * Rounds a robot carrying a cart may go without coming closer to its goal before that goal is checked to be
+     * reachable around the carts on the floor (then every as many rounds again): carts put down since the goal was
+     * given may wall it in, and the planner would hold the robot for ever.
+     */
+    static final int WALLED_IN_ROUNDS = 10;
+    /** Told the robot and the goal it carries a cart to that no path reaches any more. */
+    private final BiConsumer<String, Cell> walledIn;
 
     /** Counters the report reads (any thread). */
     static final class CommandLedgerCounts {
@@ -73,7 +82,15 @@ final class TrafficControl {
         final AtomicLong cancelledLegs = new AtomicLong();
     }
 
-    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos) {
+    /**
+     * @param window       steps the planner looks ahead
+     * @param pendingNanos how long a go-to sent may not show in the edge's device model yet
+     * @param walledIn     told a robot carrying a cart whose goal no path reaches around the carts any more, and
+     *                     that goal (on this class's thread)
+     */
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos,
+            BiConsumer<String, Cell> walledIn) {
+        this.walledIn = walledIn;
         this.pendingNanos = pendingNanos;
         this.view = view;
         this.commands = commands;
@@ -147,6 +164,32 @@ final class TrafficControl {
             boolean legDone = end == null || end.equals(s.cell());
             if (s.reachable() && s.idle() && (legDone || !pending(s))) {
                 send(s, planner.path(index.get(s.id())));
+            }
+        }
+        checkWalledIn(states.values(), grid.get());
+    }
+
+    /** Carriers that make no progress: each whose goal no path reaches around the carts is told ({@link #walledIn}). */
+    private void checkWalledIn(Iterable<RobotState> robots, Grid grid) {
+        Set<Cell> carts = null;
+        for (RobotState s : robots) {
+            int stuck = planner.stuck(index.get(s.id()));
+            Cell goal = goals.get(s.id());
+            if (!s.carrying() || goal == null || stuck < WALLED_IN_ROUNDS || stuck % WALLED_IN_ROUNDS != 0) {
+                continue;
+            }
+            if (carts == null) {
+                carts = new HashSet<>();
+                for (FleetView.CartState c : view.carts()) {
+                    if (c.carriedBy() == null) {
+                        carts.add(c.cell());
+                    }
+                }
+            }
+            if (!goal.equals(s.cell()) && grid.path(s.cell(), goal, carts) == null) {
+                LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which no path reaches around the"
+                        + " carts any more", s.id(), goal);
+                walledIn.accept(s.id(), goal);
             }
         }
     }

@@ -17,33 +17,44 @@ class CartReleaseTest {
     @Test
     void aWaveClosesWhenFullAndStaysClosedWhileOneOfItsRobotsCarriesACart() {
         CartRelease waves = CartRelease.waves(4);
-        assertThat(waves.open(0, false, 1)).isTrue();
-        assertThat(waves.open(3, false, 1)).isTrue();
-        assertThat(waves.open(4, false, 1)).as("the wave is full").isFalse();
-        assertThat(waves.open(0, true, 1)).as("a robot of the wave carries its cart back").isFalse();
-        assertThat(waves.open(4, false, 3)).as("a wave does not grow with the doors").isFalse();
+        assertThat(waves.open(0, 0, 1)).isTrue();
+        assertThat(waves.open(3, 0, 1)).isTrue();
+        assertThat(waves.open(4, 0, 1)).as("the wave is full").isFalse();
+        assertThat(waves.open(0, 1, 1)).as("a robot of the wave carries its cart back").isFalse();
+        assertThat(waves.open(4, 0, 3)).as("a wave does not grow with the doors").isFalse();
         assertThat(waves.order(1)).isEqualTo(CartChoice.Order.NEAREST);
     }
 
     @Test
     void releasedContinuouslyARobotSetsOffWhileOthersCarryTheirCartsUpToItsShareOfTheDoors() {
         CartRelease continuous = CartRelease.continuous(10);
-        assertThat(continuous.open(0, true, 1)).isTrue();
-        assertThat(continuous.open(9, true, 1)).isTrue();
-        assertThat(continuous.open(10, true, 1)).as("ten robots per door").isFalse();
-        assertThat(continuous.open(59, true, 3)).as("through several doors twice as many").isTrue();
-        assertThat(continuous.open(60, false, 3)).isFalse();
-        assertThat(continuous.open(9, false, 0)).as("a map without a door counts as one").isTrue();
+        assertThat(continuous.open(0, 1, 1)).isTrue();
+        assertThat(continuous.open(9, 1, 1)).isTrue();
+        assertThat(continuous.open(10, 1, 1)).as("ten robots per door").isFalse();
+        assertThat(continuous.open(59, 0, 3)).as("through several doors twice as many").isTrue();
+        assertThat(continuous.open(60, 0, 3)).isFalse();
+        assertThat(continuous.open(9, 0, 0)).as("a map without a door counts as one").isTrue();
         assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
         assertThat(continuous.order(3)).as("the farthest is through another door")
                 .isEqualTo(CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR);
     }
 
     @Test
+    void releasedContinuouslyAtMostTwiceItsShareOfTheDoorsIsOutOnErrandsAndTheRestWaitsDocked() {
+        CartRelease continuous = CartRelease.continuous(10);
+        assertThat(continuous.open(5, 14, 1)).isTrue();
+        assertThat(continuous.open(5, 15, 1)).as("20 robots out through one door: going for carts or carrying")
+                .isFalse();
+        assertThat(continuous.open(30, 29, 3)).isTrue();
+        assertThat(continuous.open(30, 30, 3)).as("60 robots out through three doors, whatever the fleet's size")
+                .isFalse();
+    }
+
+    @Test
     void aReleaseLetsAtLeastOneRobotGo() {
-        assertThat(CartRelease.waves(0).open(0, false, 1)).isTrue();
-        assertThat(CartRelease.waves(0).open(1, false, 1)).isFalse();
-        assertThat(CartRelease.continuous(0).open(0, true, 1)).isTrue();
+        assertThat(CartRelease.waves(0).open(0, 0, 1)).isTrue();
+        assertThat(CartRelease.waves(0).open(1, 0, 1)).isFalse();
+        assertThat(CartRelease.continuous(0).open(0, 1, 1)).isTrue();
     }
 
     @Test

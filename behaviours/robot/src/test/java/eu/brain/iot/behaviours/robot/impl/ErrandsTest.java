@@ -196,6 +196,39 @@ class ErrandsTest {
         assertThat(errands.workLeft(floor, BAND)).as("cart2 back on the table").isTrue();
     }
 
+    @Test
+    void aCarrierWalledInByCartsPutDownSinceGetsACellItCanReachOrPutsItsCartDownWhereItStands() {
+        Errands errands = new Errands(6);
+        Cell dock = new Cell(2, 1);
+        Cell cartCell = new Cell(4, 8);
+        errands.seen("robot1", dock, true);
+        errands.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
+        Cell drop = errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
+                .orElseThrow().drop();
+        Cell at = new Cell(6, 4); // in storage, on its way
+        assertThat(drop).isNotEqualTo(at);
+
+        // every storage cell around it taken by carts put down since: boxed in on its own cell
+        List<CartState> boxedIn = new ArrayList<>(List.of(new CartState("cart1", at, "robot1")));
+        BAND.neighbours(at).forEach(n -> boxedIn.add(new CartState("cart-" + n, n, null)));
+        assertThat(BAND.path(at, drop, floor(boxedIn))).as("no way to its storage cell with a cart").isNull();
+        assertThat(errands.walledIn("robot1", at, drop, boxedIn, BAND)).isTrue();
+        assertThat(errands.of("robot1").drop()).as("it puts its cart down where it stands, in storage").isEqualTo(at);
+
+        // one cart away: another cell it can reach
+        Errands again = new Errands(6);
+        again.seen("robot1", dock, true);
+        again.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
+        Cell first = again.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
+                .orElseThrow().drop();
+        List<CartState> oneWall = new ArrayList<>(List.of(new CartState("cart1", new Cell(6, 6), "robot1")));
+        BAND.neighbours(first).forEach(n -> oneWall.add(new CartState("cart-" + n, n, null)));
+        assertThat(again.walledIn("robot1", new Cell(6, 6), first, oneWall, BAND)).isTrue();
+        Cell next = again.of("robot1").drop();
+        assertThat(next).isNotNull().isNotEqualTo(first);
+        assertThat(BAND.path(new Cell(6, 6), next, floor(oneWall))).as("reachable with its cart").isNotNull();
+    }
+
     private static List<CartState> carriedBy(List<CartState> carts, int n, String robot) {
         List<CartState> now = new ArrayList<>(carts);
         now.set(n, new CartState("cart" + n, carts.get(n).cell(), robot));

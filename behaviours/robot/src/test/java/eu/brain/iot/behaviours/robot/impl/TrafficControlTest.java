@@ -3,6 +3,7 @@ package eu.brain.iot.behaviours.robot.impl;
 import static org.assertj.core.api.Assertions.assertThat;
 
 import java.time.Instant;
+import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
@@ -42,8 +43,9 @@ class TrafficControlTest {
     private final RobotCommandsTest.Bus bus = new RobotCommandsTest.Bus();
     private final CommandLedger ledger = new CommandLedger(bus, "t-");
     private final RobotCommands commands = new RobotCommands(ledger);
+    private final List<String> walledIn = new ArrayList<>();
     private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
-            TimeUnit.SECONDS.toNanos(5));
+            TimeUnit.SECONDS.toNanos(5), (robot, goal) -> walledIn.add(robot + " " + goal));
 
     /** The robot at (1,1) with its goal at (10,2) is sent on its first leg, which the edge accepts: its end. */
     private Cell firstLeg() {
@@ -71,6 +73,23 @@ class TrafficControlTest {
         Cell nextEnd = new Cell(next.x, next.y);
         assertThat(inLine(end, nextEnd)).as("straight on from where it stands").isTrue();
         assertThat(nextEnd.distance(new Cell(10, 2))).isLessThan(end.distance(new Cell(10, 2)));
+    }
+
+    @Test
+    void aCarrierWhoseGoalCartsPutDownSinceWalledInIsReportedAfterRoundsWithoutProgress() {
+        model.carrying("cart1");
+        model.robot(1, 1, "stopped", 0, null, null);
+        model.cartOnTheFloor("cart8", 9, 2);
+        model.cartOnTheFloor("cart9", 10, 1); // (10,2) walled in: a robot carrying a cart cannot drive under them
+        traffic.goal("robot1", new Cell(10, 2));
+        traffic.step(); // its first round with this goal
+        for (int round = 1; round < TrafficControl.WALLED_IN_ROUNDS; round++) {
+            traffic.step();
+        }
+        assertThat(walledIn).as("not before it went %d rounds without progress", TrafficControl.WALLED_IN_ROUNDS)
+                .isEmpty();
+        traffic.step();
+        assertThat(walledIn).containsExactly("robot1 (10,2)");
     }
 
     @Test
@@ -111,6 +130,18 @@ class TrafficControlTest {
     /** The edge's device model of one robot on {@link #MAP}. */
     private static final class Model implements DeviceModel {
         private ProviderSnapshot robot;
+        private final List<ProviderSnapshot> carts = new ArrayList<>();
+        private String cart;
+
+        /** The robot carries this cart from now on (set before {@link #robot}). */
+        void carrying(String id) {
+            cart = id;
+        }
+
+        void cartOnTheFloor(String id, int x, int y) {
+            carts.add(new ProviderSnapshot(id, "cart", ResourceStatus.OK, Instant.now(), null, Map.of("position",
+                    Map.of("x", value("position", "x", x), "y", value("position", "y", y))), Map.of()));
+        }
 
         void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
             Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
@@ -123,6 +154,9 @@ class TrafficControlTest {
                         "state", value("mission", "state", missionState), "id", value("mission", "id", 1L),
                         "goalX", value("mission", "goalX", goal.x()), "goalY", value("mission", "goalY", goal.y())));
             }
+            if (cart != null) {
+                services.put("cart", Map.of("cart", value("cart", "cart", cart)));
+            }
             robot = new ProviderSnapshot("robot1", "robot", ResourceStatus.OK, Instant.now(), null, services,
                     Map.of());
         }
@@ -133,7 +167,9 @@ class TrafficControlTest {
 
         @Override
         public List<ProviderSnapshot> providers() {
-            return List.of(robot);
+            List<ProviderSnapshot> all = new ArrayList<>(carts);
+            all.add(robot);
+            return all;
         }
 
         @Override
