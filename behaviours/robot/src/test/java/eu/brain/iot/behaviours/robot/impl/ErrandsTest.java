@@ -170,13 +170,7 @@ class ErrandsTest {
     @Test
     void aFailedGoToToTheStorageCellGivesAnotherCellAndAFailedOneToTheCartGivesTheCartBack() {
         Errands errands = new Errands(6);
-        Cell dock = new Cell(2, 1);
-        Cell cartCell = new Cell(4, 8);
-        errands.seen("robot1", dock, true);
-        List<CartState> carts = new ArrayList<>(List.of(new CartState("cart1", cartCell, null)));
-        errands.claim("robot1", dock, carts, BAND);
-        Cell first = errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
-                .orElseThrow().drop();
+        Cell first = liftedCart1(errands);
 
         // another cart stands there now (put down since; the device model did not show it yet)
         List<CartState> now = List.of(new CartState("cart1", new Cell(4, 6), "robot1"),
@@ -199,12 +193,7 @@ class ErrandsTest {
     @Test
     void aCarrierWalledInByCartsPutDownSinceGetsACellItCanReachOrPutsItsCartDownWhereItStands() {
         Errands errands = new Errands(6);
-        Cell dock = new Cell(2, 1);
-        Cell cartCell = new Cell(4, 8);
-        errands.seen("robot1", dock, true);
-        errands.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
-        Cell drop = errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
-                .orElseThrow().drop();
+        Cell drop = liftedCart1(errands);
         Cell at = new Cell(6, 4); // in storage, on its way
         assertThat(drop).isNotEqualTo(at);
 
@@ -217,16 +206,23 @@ class ErrandsTest {
 
         // one cart away: another cell it can reach
         Errands again = new Errands(6);
-        again.seen("robot1", dock, true);
-        again.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
-        Cell first = again.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
-                .orElseThrow().drop();
+        Cell first = liftedCart1(again);
         List<CartState> oneWall = new ArrayList<>(List.of(new CartState("cart1", new Cell(6, 6), "robot1")));
         BAND.neighbours(first).forEach(n -> oneWall.add(new CartState("cart-" + n, n, null)));
         assertThat(again.walledIn("robot1", new Cell(6, 6), first, oneWall, BAND)).isTrue();
         Cell next = again.of("robot1").drop();
         assertThat(next).isNotNull().isNotEqualTo(first);
         assertThat(BAND.path(new Cell(6, 6), next, floor(oneWall))).as("reachable with its cart").isNotNull();
+    }
+
+    /** robot1, docked at (2,1), claims cart1 at (4,8) and lifts it: @return the storage cell it is given */
+    private static Cell liftedCart1(Errands errands) {
+        Cell dock = new Cell(2, 1);
+        Cell cartCell = new Cell(4, 8);
+        errands.seen("robot1", dock, true);
+        errands.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
+        return errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
+                .orElseThrow().drop();
     }
 
     private static List<CartState> carriedBy(List<CartState> carts, int n, String robot) {
