@@ -12,12 +12,20 @@ import java.lang.reflect.ParameterizedType;
 import java.lang.reflect.Type;
 import java.lang.reflect.TypeVariable;
 import java.lang.reflect.WildcardType;
+import java.time.Duration;
+import java.time.Instant;
+import java.time.LocalDate;
+import java.time.LocalDateTime;
+import java.time.LocalTime;
+import java.time.OffsetDateTime;
+import java.time.ZonedDateTime;
 import java.util.ArrayList;
 import java.util.Arrays;
 import java.util.Collection;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.function.Function;
 
 import org.osgi.util.converter.Converter;
 import org.osgi.util.converter.Converters;
@@ -33,11 +41,18 @@ import org.osgi.util.converter.Converters;
  * ({@link Writer}): a value that already has its field's type and is immutable is set as it is, a map for a nested
  * data object is built the same way, and only the other values go through the Converter, one field at a time. The
  * Converter on a whole object looks up the class's methods by reflection for every field of every event, which made
- * it the largest cost of taking an event from another node.
+ * it the largest cost of taking an event from another node. Text for a {@code java.time} field is parsed by the
+ * type's own {@code parse}, the method the Converter finds by reflection for each value.
  */
 final class EventMaps {
 
     private static final Converter CONVERTER = Converters.standardConverter();
+
+    /** The {@code java.time} types events carry, each with its {@code parse}: their text on the wire is ISO-8601. */
+    private static final Map<Class<?>, Function<CharSequence, Object>> TEXT_PARSERS = Map.of(
+            Instant.class, Instant::parse, LocalDate.class, LocalDate::parse, LocalTime.class, LocalTime::parse,
+            LocalDateTime.class, LocalDateTime::parse, OffsetDateTime.class, OffsetDateTime::parse,
+            ZonedDateTime.class, ZonedDateTime::parse, Duration.class, Duration::parse);
 
     private static final ClassValue<Reader> READERS = new ClassValue<>() {
         @Override
@@ -240,6 +255,10 @@ final class EventMaps {
             }
             if (type.isInstance(value) && EventCopier.isImmutable(value.getClass())) {
                 return value;
+            }
+            Function<CharSequence, Object> parse = TEXT_PARSERS.get(type);
+            if (parse != null && value instanceof CharSequence text) {
+                return parse.apply(text);
             }
             if (value instanceof Map<?, ?> map && genericTypes[i] instanceof Class<?> c) {
                 Writer nested = WRITERS.get(c);

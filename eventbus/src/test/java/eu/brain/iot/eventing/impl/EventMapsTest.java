@@ -102,6 +102,8 @@ class EventMapsTest {
         public Object anything;
         public Point where;
         public List<Point> path;
+        public java.time.LocalDate day;
+        public java.time.Duration lasted;
     }
 
     @Test
@@ -134,6 +136,8 @@ class EventMapsTest {
         json.put("state", "BLOCKED");
         json.put("anything", List.of(1, 2));
         json.put("timestamp", "2026-11-23T00:00:00Z");
+        json.put("day", "2026-11-23");
+        json.put("lasted", "PT1.5S");
         json.put("where", Map.of("x", 5L, "y", "6"));
         json.put("unknown", "ignored");
         inputs.add(json);

@@ -27,7 +27,9 @@ import eu.brain.iot.bis.api.InstalledBehaviour;
  * fields; nested data objects as maps, arrays and collections as lists); {@code java.time} values as their ISO-8601
  * text, which the receiving bus converts back for a typed behaviour (OSGi Converter), byte arrays as Base64.
  * <p>
- * Stateless and thread-safe (Jackson's mapper is).
+ * A batch of events of {@value Compression#MIN_BYTES} bytes or more travels deflated ({@link Compression}).
+ * <p>
+ * Thread-safe: Jackson's mapper is, and {@link Compression} keeps its state under locks.
  */
 final class Wire {
 
@@ -40,6 +42,7 @@ final class Wire {
     private final ObjectMapper mapper = new ObjectMapper().registerModule(new SimpleModule("fabric-wire")
             .addSerializer(TemporalAccessor.class, ToStringSerializer.instance))
             .configure(DeserializationFeature.FAIL_ON_UNKNOWN_PROPERTIES, false); // newer nodes may say more
+    private final Compression compression = new Compression();
 
     /** One event as its publisher keeps it (journal) and sends it: {"seq","type","types","data"}. */
     byte[] event(long seq, String type, List<String> types, Map<String, Object> data) {
@@ -51,7 +54,7 @@ final class Wire {
         return write(e);
     }
 
-    /** A batch of events already encoded by {@link #event}. */
+    /** A batch of events already encoded by {@link #event}; deflated when large. */
     byte[] batch(String from, String to, String epoch, long sent, List<byte[]> events) {
         ByteArrayOutputStream out = new ByteArrayOutputStream(64 + events.size() * 256);
         out.writeBytes(("{\"from\":" + quote(from) + ",\"to\":" + quote(to) + ",\"epoch\":" + quote(epoch)
@@ -63,7 +66,7 @@ final class Wire {
             out.writeBytes(events.get(i));
         }
         out.writeBytes("]}".getBytes(StandardCharsets.UTF_8));
-        return out.toByteArray();
+        return compression.deflateIfLarge(out.toByteArray());
     }
 
     /** A received batch. */
@@ -75,7 +78,7 @@ final class Wire {
     }
 
     Batch readBatch(byte[] payload) throws MalformedException {
-        JsonNode root = tree(payload);
+        JsonNode root = tree(compression.inflateIfDeflated(payload));
         JsonNode events = root.path("events");
         if (!events.isArray() || events.size() > MAX_BATCH_EVENTS) {
             throw new MalformedException("a batch needs an 'events' array of at most " + MAX_BATCH_EVENTS);
