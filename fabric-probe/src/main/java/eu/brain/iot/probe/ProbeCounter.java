@@ -22,9 +22,9 @@ import org.osgi.service.component.annotations.Deactivate;
 
 /**
  * A behaviour that counts probe events inside {@code notify()}, per run: how many it took, how many distinct
- * numbers, duplicates, and events out of order (a number lower than one taken before). Each event is appended to the
- * configured file before {@code notify()} returns, and the file is read back at start, so the counts cover the
- * node's restarts. Every 200 ms, when something changed, it prints per run:
+ * numbers, duplicates, and events out of order (a number lower than one taken before). With a file configured, each
+ * event is appended to it before {@code notify()} returns, and the file is read back at start, so the counts cover
+ * the node's restarts. Every 200 ms, when something changed, it prints per run:
  * {@code probe counter: run=R received=N distinct=D duplicates=U outOfOrder=O last=S}; once a run has been quiet
  * for one such period, its latency over the events taken since this start (receive time minus the event's
  * {@code sentNanos}) and the receive times of its first and last events:
@@ -99,20 +99,24 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
 
     @Activate
     public ProbeCounter(ProbeCounterConfig config) throws IOException {
-        Path file = Path.of(config.file());
-        Files.createDirectories(file.toAbsolutePath().getParent());
-        if (Files.exists(file)) {
-            for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
-                String[] f = line.split(" ");
-                if (f.length == 2) {
-                    runs.computeIfAbsent(f[0], r -> new RunCounts()).take(Long.parseLong(f[1]));
+        if (config.file().isEmpty()) {
+            out = null;
+        } else {
+            Path file = Path.of(config.file());
+            Files.createDirectories(file.toAbsolutePath().getParent());
+            if (Files.exists(file)) {
+                for (String line : Files.readAllLines(file, StandardCharsets.UTF_8)) {
+                    String[] f = line.split(" ");
+                    if (f.length == 2) {
+                        runs.computeIfAbsent(f[0], r -> new RunCounts()).take(Long.parseLong(f[1]));
+                    }
                 }
+                changed = !runs.isEmpty();
             }
-            changed = !runs.isEmpty();
+            out = Files.newBufferedWriter(file, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
+                    StandardOpenOption.APPEND);
         }
-        out = Files.newBufferedWriter(file, StandardCharsets.UTF_8, StandardOpenOption.CREATE,
-                StandardOpenOption.APPEND);
-        System.out.println("probe counter: ready (" + file + ")");
+        System.out.println("probe counter: ready (" + (out == null ? "counts in memory" : config.file()) + ")");
         reporter.scheduleWithFixedDelay(this::report, REPORT_MS, REPORT_MS, TimeUnit.MILLISECONDS);
     }
 
@@ -124,11 +128,13 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
         if (event.sentNanos != 0) {
             counts.sample(now, event.sentNanos);
         }
-        try {
-            out.write(event.run + " " + event.seq + "\n");
-            out.flush(); // to the operating system: kept when the process is killed
-        } catch (IOException e) {
-            throw new UncheckedIOException(e);
+        if (out != null) {
+            try {
+                out.write(event.run + " " + event.seq + "\n");
+                out.flush(); // to the operating system: kept when the process is killed
+            } catch (IOException e) {
+                throw new UncheckedIOException(e);
+            }
         }
         changed = true;
     }
@@ -152,6 +158,8 @@ public final class ProbeCounter implements SmartBehaviour<ProbeEvent> {
     @Deactivate
     synchronized void stop() throws IOException {
         reporter.shutdownNow();
-        out.close();
+        if (out != null) {
+            out.close();
+        }
     }
 }

@@ -18,10 +18,10 @@ import java.util.UUID;
  * stream's identity), {@code E <seq> <event JSON>}, {@code A <through>} (acknowledged up to), {@code S <seq>} (the
  * last sequence number given, after a compaction).
  * <p>
- * Records are written to the operating system at once (no fsync): they survive the node's process being killed,
- * not a power cut. A journal without pending events is compacted when it passes {@link #COMPACT_BYTES}.
+ * Records are handed to the operating system by the sender thread before their events go on the wire (no fsync):
+ * they survive the node's process being killed, not a power cut. A journal without pending events is compacted when it passes {@link #COMPACT_BYTES}.
  * <p>
- * Not thread-safe: its {@link Outbox} calls it under its own lock.
+ * Not thread-safe: its {@link Outbox} calls it under its journal lock (the sender thread, and the outbox's close).
  */
 final class Journal implements AutoCloseable {
 

@@ -16,11 +16,15 @@ import eu.brain.iot.federation.impl.Journal.Pending;
  * <p>
  * Events move from {@link #unsent} to {@link #unacked} when the sender takes them for a message, and back to the
  * front of {@link #unsent} when they must be sent again (a reconnection, or no acknowledgement within the resend
- * timeout). An acknowledgement covers every event up to a sequence number.
+ * timeout). An acknowledgement covers every event up to a sequence number. An event is in the journal, handed to the
+ * operating system, before it is taken for a message ({@link #writeJournal}, {@link #journaledThrough}).
  * <p>
  * Threads: the bus's delivery workers append (forwarders of this destination; several may run at once), the sender
- * thread takes batches, the inbound thread applies acknowledgements; all under this object's monitor. An appender
- * waits while {@code maxPending} events are kept (the bus then pushes back on publishers, as for a full queue).
+ * thread writes the journal and takes batches, the inbound thread applies acknowledgements; the queues are under this
+ * object's monitor, which no file write holds (a write that stalls in the operating system would stall every
+ * publisher to this node), and the journal under {@link #journalLock}, held by the sender thread and by
+ * {@link #close}. An appender waits while {@code maxPending} events are kept (the bus then pushes back on
+ * publishers, as for a full queue).
  */
 final class Outbox implements AutoCloseable {
 
@@ -34,6 +38,13 @@ final class Outbox implements AutoCloseable {
     private long ackedThrough;
     private final ArrayDeque<Pending> unacked = new ArrayDeque<>();
     private final ArrayDeque<Pending> unsent = new ArrayDeque<>();
+    /** Events appended and not yet in the journal, in sequence order. */
+    private final ArrayDeque<Pending> unjournaled = new ArrayDeque<>();
+    /** The highest sequence number the journal holds (all lower ones are in it or acknowledged). */
+    private long journaledThrough;
+    /** An acknowledgement the journal does not record yet; 0: none. */
+    private long ackToRecord;
+    private final Object journalLock = new Object();
     /** When the last acknowledgement that freed events came, or the oldest unacknowledged event was sent. */
     private long progressNanos = System.nanoTime();
     private boolean closed;
@@ -48,6 +59,7 @@ final class Outbox implements AutoCloseable {
         this.epoch = l.epoch();
         this.lastSeq = l.lastSeq();
         this.ackedThrough = l.ackedThrough();
+        this.journaledThrough = l.lastSeq();
         this.unsent.addAll(l.pending());
         stats.backlog(unsent.size());
     }
@@ -74,15 +86,54 @@ final class Outbox implements AutoCloseable {
             throw new IllegalStateException("the fabric connection to " + destination + " is closed");
         }
         long seq = lastSeq + 1;
-        byte[] json = encoder.apply(seq);
-        try {
-            journal.append(seq, json);
-        } catch (IOException e) {
-            throw new UncheckedIOException("the fabric journal for " + destination + " cannot be written", e);
-        }
+        Pending p = new Pending(seq, encoder.apply(seq));
         lastSeq = seq;
-        unsent.addLast(new Pending(seq, json));
+        unsent.addLast(p);
+        unjournaled.addLast(p);
         stats.backlog(unsent.size() + unacked.size());
+    }
+
+    /**
+     * Hand the events appended since the last call, and the last acknowledgement, to the journal and the operating
+     * system; compact the journal when it has grown. Called by the sender thread, whether or not the destination is
+     * online: a publishing node killed keeps what it accepted for a node that is away.
+     */
+    void writeJournal() throws IOException {
+        synchronized (journalLock) {
+            List<Pending> events;
+            long ack;
+            List<Pending> keep = null;
+            long through;
+            synchronized (this) {
+                if (closed || unjournaled.isEmpty() && ackToRecord == 0) {
+                    return;
+                }
+                events = new ArrayList<>(unjournaled);
+                unjournaled.clear();
+                ack = ackToRecord;
+                ackToRecord = 0;
+                through = events.isEmpty() ? journaledThrough : events.get(events.size() - 1).seq();
+                if (journal.wantsCompaction() && unacked.size() + unsent.size() < 10_000) {
+                    keep = new ArrayList<>(unacked);
+                    keep.addAll(unsent);
+                    through = lastSeq;
+                }
+            }
+            if (keep != null) {
+                journal.rewrite(epoch, through, keep); // every event up to 'through' is acknowledged or kept
+            } else {
+                for (Pending p : events) {
+                    journal.append(p.seq(), p.json());
+                }
+                if (ack > 0) {
+                    journal.acked(ack);
+                }
+                journal.flush();
+            }
+            synchronized (this) {
+                journaledThrough = Math.max(journaledThrough, through);
+            }
+        }
     }
 
     /** @return whether events wait to be sent */
@@ -90,14 +141,10 @@ final class Outbox implements AutoCloseable {
         return !unsent.isEmpty();
     }
 
-    /**
-     * Take up to {@code max} events to send, after handing the journal to the operating system (an event is in the
-     * journal before it is on the wire).
-     */
-    synchronized List<Pending> take(int max) throws IOException {
-        journal.flush();
+    /** Take up to {@code max} events to send, among those the journal holds ({@link #writeJournal} first). */
+    synchronized List<Pending> take(int max) {
         List<Pending> batch = new ArrayList<>(Math.min(max, unsent.size()));
-        while (batch.size() < max && !unsent.isEmpty()) {
+        while (batch.size() < max && !unsent.isEmpty() && unsent.peekFirst().seq() <= journaledThrough) {
             Pending p = unsent.pollFirst();
             batch.add(p);
             unacked.addLast(p);
@@ -108,8 +155,8 @@ final class Outbox implements AutoCloseable {
         return batch;
     }
 
-    /** The destination took every event up to {@code through}. */
-    synchronized void acked(String ackEpoch, long through) throws IOException {
+    /** The destination took every event up to {@code through}; the journal records it at its next write. */
+    synchronized void acked(String ackEpoch, long through) {
         if (!epoch.equals(ackEpoch) || through <= ackedThrough) {
             return;
         }
@@ -120,12 +167,7 @@ final class Outbox implements AutoCloseable {
             stats.acked(freed);
             notifyAll();
         }
-        journal.acked(ackedThrough);
-        if (journal.wantsCompaction() && unacked.size() + unsent.size() < 10_000) {
-            List<Pending> keep = new ArrayList<>(unacked);
-            keep.addAll(unsent);
-            journal.rewrite(epoch, lastSeq, keep);
-        }
+        ackToRecord = ackedThrough;
         stats.backlog(unsent.size() + unacked.size());
     }
 
@@ -163,9 +205,13 @@ final class Outbox implements AutoCloseable {
     }
 
     @Override
-    public synchronized void close() throws IOException {
-        closed = true;
-        notifyAll();
-        journal.close();
+    public void close() throws IOException {
+        synchronized (this) {
+            closed = true;
+            notifyAll();
+        }
+        synchronized (journalLock) {
+            journal.close();
+        }
     }
 }

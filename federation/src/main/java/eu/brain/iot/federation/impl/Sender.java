@@ -10,8 +10,8 @@ import eu.brain.iot.federation.impl.Journal.Pending;
 import eu.brain.iot.federation.impl.RemoteNode.Presence;
 
 /**
- * Takes batches of events from the {@link Outbox}es and publishes them, signed, to the nodes they are for; sends
- * again what was not acknowledged in time. An outbox of a node that is not online keeps its events until the node is
+ * Writes the {@link Outbox}es' journals, takes batches of events from them and publishes them, signed, to the nodes
+ * they are for; sends again what was not acknowledged in time. An outbox of a node that is not online keeps its events until the node is
  * back (its acknowledgement could not come).
  * <p>
  * Threads: its own thread ({@code brain-iot-fabric-out}) sends; anyone may {@link #wake} it; the resend check runs
@@ -64,6 +64,9 @@ final class Sender {
                     }
                     wanted = false;
                 }
+                for (Outbox outbox : outboxes) {
+                    outbox.writeJournal(); // connected or not: what was accepted is kept if this node is killed
+                }
                 boolean more = true;
                 while (more && !closed && link.isConnected()) {
                     more = false;
@@ -84,6 +87,7 @@ final class Sender {
 
     /** @return whether the outbox has more to send */
     private boolean sendSome(Outbox outbox) throws IOException, InterruptedException {
+        outbox.writeJournal(); // what was appended since the loop's first write
         if (!outbox.hasUnsent()) {
             return false;
         }

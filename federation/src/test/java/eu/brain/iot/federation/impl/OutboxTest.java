@@ -1,0 +1,96 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.util.List;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+import eu.brain.iot.federation.impl.Journal.Pending;
+
+/**
+ * An outbox and its journal: an event goes on the wire only once the journal holds it, the sender thread writes the
+ * journal whether or not the events are sent, and a publishing node started again finds every event its destination
+ * has not acknowledged, in order, under the same epoch.
+ */
+class OutboxTest {
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void anEventIsTakenOnlyOnceTheJournalHoldsIt() throws Exception {
+        try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            append(outbox, 3);
+            assertThat(outbox.hasUnsent()).isTrue();
+            assertThat(outbox.take(10)).as("nothing before the journal has it").isEmpty();
+            assertThat(journalLines()).noneMatch(l -> l.startsWith("E "));
+
+            outbox.writeJournal();
+            assertThat(journalLines()).filteredOn(l -> l.startsWith("E ")).hasSize(3);
+            assertThat(outbox.take(10)).extracting(Pending::seq).containsExactly(1L, 2L, 3L);
+        }
+    }
+
+    @Test
+    void aRestartedPublisherFindsWhatWasNotAcknowledgedSentOrNot() throws Exception {
+        String epoch;
+        try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            epoch = outbox.epoch();
+            append(outbox, 4);
+            outbox.writeJournal();
+            outbox.take(2); // 1 and 2 on the wire
+            outbox.acked(epoch, 1);
+            append(outbox, 1); // 5: its node went away, never taken
+            outbox.writeJournal();
+        }
+        try (Outbox again = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            assertThat(again.epoch()).isEqualTo(epoch);
+            assertThat(again.take(10)).extracting(Pending::seq).containsExactly(2L, 3L, 4L, 5L);
+            append(again, 1);
+            again.writeJournal();
+            assertThat(again.take(10)).extracting(Pending::seq).as("numbering goes on").containsExactly(6L);
+        }
+    }
+
+    @Test
+    void aCompactedJournalKeepsThePendingEventsAndTheNumbering() throws Exception {
+        String epoch;
+        byte[] big = new byte[64 * 1024];
+        java.util.Arrays.fill(big, (byte) ' ');
+        int bigEvents = (int) (Journal.COMPACT_BYTES / big.length) + 10;
+        try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            epoch = outbox.epoch();
+            for (int i = 0; i < bigEvents; i++) {
+                outbox.append(seq -> big);
+                outbox.writeJournal();
+                outbox.acked(epoch, outbox.take(10).get(0).seq());
+            }
+            append(outbox, 1);
+            outbox.writeJournal();
+        }
+        assertThat(Files.size(dir.resolve("b.journal"))).as("compacted").isLessThan(1 << 20);
+        try (Outbox again = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            assertThat(again.epoch()).isEqualTo(epoch);
+            List<Pending> pending = again.take(10);
+            assertThat(pending).extracting(Pending::seq).containsExactly(bigEvents + 1L);
+            append(again, 1);
+            again.writeJournal();
+            assertThat(again.take(10)).extracting(Pending::seq).containsExactly(bigEvents + 2L);
+        }
+    }
+
+    private static void append(Outbox outbox, int events) throws InterruptedException {
+        for (int i = 0; i < events; i++) {
+            outbox.append(seq -> ("{\"n\":" + seq + "}").getBytes(StandardCharsets.UTF_8));
+        }
+    }
+
+    private List<String> journalLines() throws Exception {
+        return Files.readAllLines(dir.resolve("b.journal"), StandardCharsets.UTF_8);
+    }
+}
