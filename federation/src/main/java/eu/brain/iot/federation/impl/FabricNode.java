@@ -5,16 +5,13 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.util.ArrayList;
 import java.util.Collection;
-import java.util.LinkedHashSet;
 import java.util.List;
 import java.util.Map;
-import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Executors;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
-import java.util.concurrent.atomic.AtomicBoolean;
 import java.util.stream.Stream;
 
 import eu.brain.iot.federation.impl.Wire.MalformedException;
@@ -28,9 +25,10 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * <ul>
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
- * {@link Inbox}es, acknowledgements, connection events, the resend check; Paho's threads only queue work here;</li>
- * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): takes batches from the {@link Outbox}es and
- * publishes them;</li>
+ * {@link Inboxes} and their acknowledgements, connection events, the resend check; Paho's threads only queue work
+ * here;</li>
+ * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals, takes
+ * batches from them and publishes them;</li>
  * <li>the bus's delivery workers call the forwarders, which append to the outboxes (see there).</li>
  * </ul>
  */
@@ -38,14 +36,6 @@ public final class FabricNode implements AutoCloseable {
 
     /** How often unacknowledged events are checked against the resend timeout, as a share of it. */
     static final int RESEND_CHECKS_PER_TIMEOUT = 4;
-    /** Back-off before offering again events the bus refused (a full local queue). */
-    static final long BUS_RETRY_MILLIS = 2;
-    /**
-     * How long the acknowledgements of events done wait to be sent together: each acknowledges every event of its
-     * publisher done so far, so one per few milliseconds is enough, where one per event doubled the messages through
-     * the broker and, whenever the broker was slow to confirm, held the inbound thread (and the events behind it).
-     */
-    static final long ACK_DELAY_MILLIS = 5;
     /** Back-off between first connection attempts. */
     static final long CONNECT_RETRY_MILLIS = 1000;
 
@@ -62,9 +52,7 @@ public final class FabricNode implements AutoCloseable {
     private final Map<String, RemoteNode> nodes = new ConcurrentHashMap<>();
     private final Membership membership;
     private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
-    private final Map<String, Inbox> inboxes = new ConcurrentHashMap<>();
-    private final Set<Inbox> refused = new LinkedHashSet<>();
-    private final AtomicBoolean ackPending = new AtomicBoolean();
+    private final Inboxes inboxes;
     private volatile List<InterestEntry> localInterest = List.of();
     private volatile boolean closed;
     private volatile boolean joined;
@@ -73,8 +61,6 @@ public final class FabricNode implements AutoCloseable {
     private boolean connecting;
     private boolean warnedUnreachable;
     private boolean joinedBefore;
-    /** When this node was made: for {@link Inbox#STARTING_NANOS} after, events wait for the behaviours they are for. */
-    private final long madeNanos = System.nanoTime();
 
     /**
      * @throws IOException when the key cannot be read or the state folder not used: the node does not join
@@ -113,6 +99,7 @@ public final class FabricNode implements AutoCloseable {
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
                 this::node, this::outbox, to -> (type, names, data) -> forward(to, type, names, data));
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
+        this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
             @Override
             public void send(String to, Wire.Install message) throws IOException, InterruptedException {
@@ -206,7 +193,7 @@ public final class FabricNode implements AutoCloseable {
                     e.getMessage());
         }
         sender.resendCheck(true); // what the broker may have lost is sent again
-        flushAcks();
+        inboxes.flushAcks();
     }
 
     private void publishPresence(String state) throws IOException, InterruptedException {
@@ -307,67 +294,7 @@ public final class FabricNode implements AutoCloseable {
         if (!fresh(batch.sent(), stats)) {
             return;
         }
-        Inbox inbox = inboxes.get(from);
-        if (inbox == null) {
-            inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats,
-                    () -> System.nanoTime() - madeNanos < Inbox.STARTING_NANOS);
-            inboxes.put(from, inbox);
-        }
-        long dupsBefore = stats.duplicates.sum();
-        if (inbox.accept(batch.epoch(), batch.events(), host.remoteEvents(), this::eventsDone)) {
-            retryLater(inbox);
-        }
-        if (stats.duplicates.sum() != dupsBefore) {
-            eventsDone();
-        }
-    }
-
-    private void retryLater(Inbox inbox) {
-        if (refused.add(inbox) && refused.size() == 1) {
-            in.schedule(this::offerRefused, BUS_RETRY_MILLIS, TimeUnit.MILLISECONDS);
-        }
-    }
-
-    private void offerRefused() {
-        List<Inbox> again = new ArrayList<>(refused);
-        refused.clear();
-        for (Inbox inbox : again) {
-            if (inbox.offer(host.remoteEvents(), this::eventsDone)) {
-                retryLater(inbox);
-            }
-        }
-    }
-
-    /**
-     * Called by a delivery worker when events of a publisher are done: acknowledged {@link #ACK_DELAY_MILLIS} later,
-     * with those done meanwhile, on the inbound thread.
-     */
-    private void eventsDone() {
-        if (ackPending.compareAndSet(false, true)) {
-            in.schedule(this::flushAcks, ACK_DELAY_MILLIS, TimeUnit.MILLISECONDS);
-        }
-    }
-
-    private void flushAcks() {
-        ackPending.set(false);
-        if (!link.isConnected()) {
-            return;
-        }
-        long now = System.currentTimeMillis();
-        for (Inbox inbox : inboxes.values()) {
-            try {
-                if (!link.publishIfRoom(topics.acks(inbox.publisher(), settings.node()), () -> {
-                    Wire.Ack ack = inbox.ackToSend(settings.node(), now);
-                    return ack == null ? null : wire.ack(ack);
-                })) {
-                    eventsDone(); // the broker has not confirmed earlier publications: the inbound thread goes on
-                    return;
-                }
-            } catch (IOException e) {
-                host.warn("Fabric {}: acknowledgement to {} not sent ({}); sent again later", settings.fabric(),
-                        inbox.publisher(), e.getMessage());
-            }
-        }
+        inboxes.accept(from, batch, stats);
     }
 
     private void onInstall(String from, Wire.Install message, NodeStats stats) {
@@ -478,13 +405,7 @@ public final class FabricNode implements AutoCloseable {
     }
 
     private void shutdown(boolean abort) {
-        for (Inbox i : inboxes.values()) { // first: no window moves after this instant
-            try {
-                i.close();
-            } catch (IOException e) {
-                host.warn("Fabric {}: window of {} not closed: {}", settings.fabric(), i.publisher(), e.getMessage());
-            }
-        }
+        inboxes.close(); // first: no window moves after this instant
         in.shutdownNow();
         try {
             in.awaitTermination(5, TimeUnit.SECONDS);
