@@ -18,8 +18,9 @@ import java.util.UUID;
  * stream's identity), {@code E <seq> <event JSON>}, {@code A <through>} (acknowledged up to), {@code S <seq>} (the
  * last sequence number given, after a compaction).
  * <p>
- * Records are handed to the operating system by the sender thread before their events go on the wire (no fsync):
- * they survive the node's process being killed, not a power cut. A journal without pending events is compacted when it passes {@link #COMPACT_BYTES}.
+ * Records are handed to the operating system by the sender thread before their events go on the wire (no fsync): they
+ * survive the node's process being killed, not a power cut. A journal with fewer than 10,000 pending events is
+ * compacted when it passes {@link #COMPACT_BYTES}.
  * <p>
  * Not thread-safe: its {@link Outbox} calls it under its journal lock (the sender thread, and the outbox's close).
  */

@@ -11,8 +11,8 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
 
 /**
  * Writes the {@link Outbox}es' journals, takes batches of events from them and publishes them, signed, to the nodes
- * they are for; sends again what was not acknowledged in time. An outbox of a node that is not online keeps its events until the node is
- * back (its acknowledgement could not come).
+ * they are for; sends again what was not acknowledged in time. An outbox of a node that is not online keeps its events
+ * until the node is back (its acknowledgement could not come).
  * <p>
  * Threads: its own thread ({@code brain-iot-fabric-out}) sends; anyone may {@link #wake} it; the resend check runs
  * on the fabric's inbound thread. The outboxes synchronise themselves.

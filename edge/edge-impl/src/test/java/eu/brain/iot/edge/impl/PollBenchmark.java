@@ -1,8 +1,6 @@
 package eu.brain.iot.edge.impl;
 
-import java.io.BufferedReader;
 import java.io.IOException;
-import java.io.InputStreamReader;
 import java.lang.management.GarbageCollectorMXBean;
 import java.lang.management.ManagementFactory;
 import java.lang.management.ThreadInfo;
@@ -16,10 +14,7 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 import java.nio.file.Paths;
 import java.time.Duration;
-import java.util.ArrayDeque;
 import java.util.ArrayList;
-import java.util.Arrays;
-import java.util.Deque;
 import java.util.HashMap;
 import java.util.List;
 import java.util.Locale;
@@ -75,16 +70,16 @@ public final class PollBenchmark {
 
     private static final ObjectMapper JSON = new ObjectMapper();
 
-    private final Options o;
+    private final PollBenchmarkOptions o;
 
-    private PollBenchmark(Options o) {
+    private PollBenchmark(PollBenchmarkOptions o) {
         this.o = o;
     }
 
     public static void main(String[] args) throws Exception {
-        Options o;
+        PollBenchmarkOptions o;
         try {
-            o = Options.parse(args);
+            o = PollBenchmarkOptions.parse(args);
         } catch (IllegalArgumentException e) {
             System.out.println("poll-bench: " + e.getMessage());
             System.out.print(USAGE);
@@ -136,7 +131,7 @@ public final class PollBenchmark {
         System.out.printf(Locale.ROOT, "%n== %,d robots (map %dx%d), load average %s%n", robots, size[0], size[1],
                 loadStart);
         generate(robots, size, map);
-        Simulator sim = Simulator.start(o, map, simLog);
+        SimulatorProcess sim = SimulatorProcess.start(o, map, simLog);
         try {
             if (o.moving > 0) {
                 long t0 = System.nanoTime();
@@ -339,88 +334,6 @@ public final class PollBenchmark {
         }
     }
 
-    /** The simulator in its own process. */
-    private static final class Simulator {
-        final Process process;
-        final URI base;
-        private final Deque<String> tail;
-
-        private Simulator(Process process, URI base, Deque<String> tail) {
-            this.process = process;
-            this.base = base;
-            this.tail = tail;
-        }
-
-        static Simulator start(Options o, Path map, Path log) throws IOException, InterruptedException {
-            List<String> command = new ArrayList<>(List.of("java"));
-            if (!o.simJavaOpts.isBlank()) {
-                command.addAll(Arrays.asList(o.simJavaOpts.trim().split("\\s+")));
-            }
-            command.addAll(List.of("-jar", o.simJar.toString(), "--port", "0", "--map", map.toString(), "--quiet"));
-            if (o.simIoThreads > 0) {
-                command.addAll(List.of("--io-threads", String.valueOf(o.simIoThreads)));
-            }
-            Process p = new ProcessBuilder(command).redirectErrorStream(true).start();
-            Deque<String> tail = new ArrayDeque<>();
-            BufferedReader out = new BufferedReader(new InputStreamReader(p.getInputStream(), StandardCharsets.UTF_8));
-            URI base = null;
-            long deadline = System.nanoTime() + TimeUnit.SECONDS.toNanos(120);
-            String line;
-            while (base == null && (line = out.readLine()) != null) {
-                remember(tail, line);
-                if (line.startsWith("robot-sim:")) {
-                    System.out.println(line);
-                }
-                if (line.startsWith("listening on ")) {
-                    base = URI.create(line.substring("listening on ".length()).trim());
-                }
-                if (System.nanoTime() > deadline) {
-                    break;
-                }
-            }
-            if (base == null) {
-                p.destroyForcibly();
-                throw new IOException("robot-sim did not start: " + String.join(" | ", tail));
-            }
-            Thread drain = new Thread(() -> {
-                try {
-                    String l;
-                    while ((l = out.readLine()) != null) {
-                        synchronized (tail) {
-                            remember(tail, l);
-                        }
-                    }
-                } catch (IOException e) {
-                    // the process ended
-                }
-            }, "robot-sim-output");
-            drain.setDaemon(true);
-            drain.start();
-            return new Simulator(p, base, tail);
-        }
-
-        private static void remember(Deque<String> tail, String line) {
-            if (tail.size() == 20) {
-                tail.removeFirst();
-            }
-            tail.addLast(line);
-        }
-
-        void stop() throws InterruptedException {
-            if (!process.isAlive()) {
-                synchronized (tail) {
-                    System.out.println("robot-sim had ended (exit " + process.exitValue() + "): "
-                            + String.join(" | ", tail));
-                }
-                return;
-            }
-            process.destroy();
-            if (!process.waitFor(10, TimeUnit.SECONDS)) {
-                process.destroyForcibly().waitFor();
-            }
-        }
-    }
-
     /** CPU time of this process, of its threads by group, and of the simulator process, at one instant. */
     private record Cpu(long wallNanos, long edgeNanos, long fleetNanos, long httpNanos, long simNanos, long gcCount,
             long gcMillis) {
@@ -520,110 +433,6 @@ public final class PollBenchmark {
                     s.deviationP99Millis(), events / wallSeconds(), edgeCore(), edgeCore() / cores, microsPerPoll(),
                     fleetCore(),
                     httpCore(), simCore(), loadStart, loadEnd);
-        }
-    }
-
-    /** The command line. */
-    private static final class Options {
-        List<Integer> robots = List.of(100, 1_000, 10_000);
-        int warmup = 20;
-        int duration = 30;
-        long periodMillis = 500;
-        long timeoutMillis = 1_000;
-        int connections = 64;
-        int ioThreads = 1;
-        double moving = 0.1;
-        long seed = 1;
-        int nodes = 1;
-        Path simJar;
-        int simIoThreads;
-        String simJavaOpts = "";
-        int width;
-        int height;
-
-        /** @return the options, or {@code null} for --help */
-        static Options parse(String[] args) {
-            Options o = new Options();
-            String jar = null;
-            for (int i = 0; i < args.length; i++) {
-                String flag = args[i];
-                if (flag.equals("--help") || flag.equals("-h")) {
-                    return null;
-                }
-                if (i + 1 >= args.length) {
-                    throw new IllegalArgumentException(flag + " needs a value");
-                }
-                String v = args[++i];
-                switch (flag) {
-                    case "--robots" -> {
-                        List<Integer> sizes = new ArrayList<>();
-                        for (String part : v.split(",")) {
-                            sizes.add(number(flag, part.replace("_", ""), 1, 1_000_000));
-                        }
-                        o.robots = sizes;
-                    }
-                    case "--warmup" -> o.warmup = number(flag, v, 0, 3_600);
-                    case "--duration" -> o.duration = number(flag, v, 1, 3_600);
-                    case "--period-ms" -> o.periodMillis = number(flag, v, 1, 3_600_000);
-                    case "--timeout-ms" -> o.timeoutMillis = number(flag, v, 1, 3_600_000);
-                    case "--connections" -> o.connections = number(flag, v, 1, 10_000);
-                    case "--io-threads" -> o.ioThreads = number(flag, v, 1, 64);
-                    case "--moving" -> {
-                        try {
-                            o.moving = Double.parseDouble(v);
-                        } catch (NumberFormatException e) {
-                            o.moving = -1;
-                        }
-                        if (!(o.moving >= 0 && o.moving <= 1)) {
-                            throw new IllegalArgumentException("--moving must be a share 0..1, found '" + v + "'");
-                        }
-                    }
-                    case "--seed" -> o.seed = number(flag, v, 0, Integer.MAX_VALUE);
-                    case "--nodes" -> o.nodes = number(flag, v, 1, 64);
-                    case "--sim-jar" -> jar = v;
-                    case "--sim-io-threads" -> o.simIoThreads = number(flag, v, 1, 64);
-                    case "--sim-java-opts" -> o.simJavaOpts = v;
-                    case "--width" -> o.width = number(flag, v, 10, 10_000);
-                    case "--height" -> o.height = number(flag, v, 10, 10_000);
-                    default -> throw new IllegalArgumentException("unknown option " + flag);
-                }
-            }
-            if ((o.width > 0) != (o.height > 0)) {
-                throw new IllegalArgumentException("--width and --height go together");
-            }
-            o.simJar = simJar(jar);
-            return o;
-        }
-
-        private static Path simJar(String given) {
-            if (given != null) {
-                Path p = Paths.get(given);
-                if (!Files.isRegularFile(p)) {
-                    throw new IllegalArgumentException("--sim-jar: no file " + p.toAbsolutePath());
-                }
-                return p.toAbsolutePath();
-            }
-            for (String candidate : List.of("robot-sim/target/robot-sim.jar", "../robot-sim/target/robot-sim.jar")) {
-                Path p = Paths.get(candidate);
-                if (Files.isRegularFile(p)) {
-                    return p.toAbsolutePath();
-                }
-            }
-            throw new IllegalArgumentException("no robot-sim/target/robot-sim.jar: build it (mvn -B -q -pl robot-sim "
-                    + "package -DskipTests) or give --sim-jar");
-        }
-
-        private static int number(String flag, String v, int min, int max) {
-            try {
-                int n = Integer.parseInt(v.trim());
-                if (n >= min && n <= max) {
-                    return n;
-                }
-            } catch (NumberFormatException e) {
-                // below
-            }
-            throw new IllegalArgumentException(flag + " must be a whole number " + min + ".." + max + ", found '" + v
-                    + "'");
         }
     }
 }
