@@ -14,9 +14,8 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * robots go for carts at once, and none sets off while a robot of the wave still carries its cart, so the door is
  * crossed one way at a time; each robot claims the nearest cart.</li>
  * <li>{@link #continuous(int) Continuous} (the traffic planner drives): a robot claims a cart as soon as it is back
- * at its dock, while fewer than a number of robots per door (twice as many through each of several doors) go for
- * carts and fewer than twice that number per door are out on an errand for a cart (going for one or carrying it);
- * the planner's passage claims and door batches take each door one way at a time.
+ * at its dock, while fewer than a number of robots per door are out on an errand for a cart (going for one or
+ * carrying it); the planner's passage claims and door batches take each door one way at a time.
  * Each robot claims the cart with the longest errand behind its door first ({@link #order}), so the warehouse ends
  * with short errands rather than a few long ones.</li>
  * </ul>
@@ -29,20 +28,13 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * Immutable: any thread.
  */
 final class CartRelease {
-    /** Robots per door that may go for carts at once when released continuously. */
-    static final int ROBOTS_PER_DOOR = 10;
     /**
-     * How many times {@link #ROBOTS_PER_DOOR} go through each of several doors: there the fleet, not the doors,
-     * bounds the warehouse, and robots kept docked at the start are time lost (BENCHMARKS.md, "With the traffic
+     * Robots per door that may be out on an errand for a cart at once (going for one or carrying it) when released
+     * continuously: a fleet larger than the doors and aisles carry only crowds them, and the rest wait docked (60x30,
+     * one door: 20 of 30 robots; 120x40, 3 doors: 60 whatever the fleet's size; BENCHMARKS.md, "With the traffic
      * planner").
      */
-    static final int SEVERAL_DOORS_FACTOR = 2;
-    /**
-     * How many times the robots per door may be out on an errand for a cart at once (going for one or carrying it):
-     * a fleet larger than the doors and aisles carry only crowds them, and the rest wait docked (120x40, 3 doors:
-     * 60 robots out at most, whatever the fleet's size; BENCHMARKS.md, "With the traffic planner").
-     */
-    static final int WORKING_FACTOR = 2;
+    static final int ROBOTS_PER_DOOR = 20;
 
     private final int robots;
     private final boolean perDoor;
@@ -57,10 +49,7 @@ final class CartRelease {
         return new CartRelease(robots, false);
     }
 
-    /**
-     * @param robotsPerDoor robots per door that may go for carts at once (at least 1; through several doors,
-     *                      {@link #SEVERAL_DOORS_FACTOR} times as many)
-     */
+    /** @param robotsPerDoor robots per door that may be out on an errand for a cart at once (at least 1) */
     static CartRelease continuous(int robotsPerDoor) {
         return new CartRelease(robotsPerDoor, true);
     }
@@ -75,9 +64,7 @@ final class CartRelease {
         if (!perDoor) {
             return carrying == 0 && goingForCarts < robots;
         }
-        long perDoors = (long) robots * Math.max(1, doors);
-        return goingForCarts < perDoors * (doors > 1 ? SEVERAL_DOORS_FACTOR : 1)
-                && goingForCarts + carrying < perDoors * WORKING_FACTOR;
+        return goingForCarts + carrying < (long) robots * Math.max(1, doors);
     }
 
     /**

@@ -199,7 +199,7 @@ final class Errands {
      * has not started back: no robot comes up through the door against the robots going down) and fewer than a
      * wave's robots go for carts; once a robot lifts its cart, no new claim until every cart of the wave is placed in
      * storage, then the next wave goes down. Released continuously (the traffic planner), a robot may claim while
-     * fewer than its share of robots per door go for carts, and fewer than twice that share are out for carts.
+     * fewer than its share of robots per door are out on an errand for a cart (going for one or carrying it).
      *
      * @param grid the map (its doors)
      * @return whether a robot without an errand may claim a cart now

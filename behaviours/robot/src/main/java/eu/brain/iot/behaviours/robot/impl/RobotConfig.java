@@ -45,9 +45,8 @@ public @interface RobotConfig {
     boolean traffic() default false;
 
     /**
-     * With the traffic planner: robots per door that may go for carts at once (released continuously, each robot as
-     * soon as it is back at its dock: {@code CartRelease}); through several doors twice as many per door; and at most
-     * twice this many per door out for carts at once, going for one or carrying it.
+     * With the traffic planner: robots per door that may be out on an errand for a cart at once, going for one or
+     * carrying it (released continuously, each robot as soon as it is back at its dock: {@code CartRelease}).
      */
     int traffic_release_robots_per_door() default CartRelease.ROBOTS_PER_DOOR;
 

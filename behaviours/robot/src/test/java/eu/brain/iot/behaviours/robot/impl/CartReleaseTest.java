@@ -26,35 +26,29 @@ class CartReleaseTest {
     }
 
     @Test
-    void releasedContinuouslyARobotSetsOffWhileOthersCarryTheirCartsUpToItsShareOfTheDoors() {
-        CartRelease continuous = CartRelease.continuous(10);
+    void releasedContinuouslyARobotSetsOffWhileFewerThanItsShareOfTheDoorsAreOutOnErrands() {
+        CartRelease continuous = CartRelease.continuous(20);
         assertThat(continuous.open(0, 1, 1)).isTrue();
-        assertThat(continuous.open(9, 1, 1)).isTrue();
-        assertThat(continuous.open(10, 1, 1)).as("ten robots per door").isFalse();
-        assertThat(continuous.open(59, 0, 3)).as("through several doors twice as many").isTrue();
-        assertThat(continuous.open(60, 0, 3)).isFalse();
-        assertThat(continuous.open(9, 0, 0)).as("a map without a door counts as one").isTrue();
-        assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
-        assertThat(continuous.order(3)).as("the farthest is through another door")
-                .isEqualTo(CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR);
-    }
-
-    @Test
-    void releasedContinuouslyAtMostTwiceItsShareOfTheDoorsIsOutOnErrandsAndTheRestWaitsDocked() {
-        CartRelease continuous = CartRelease.continuous(10);
+        assertThat(continuous.open(19, 0, 1)).as("as many going for carts as the door's share").isTrue();
+        assertThat(continuous.open(20, 0, 1)).as("20 robots per door").isFalse();
         assertThat(continuous.open(5, 14, 1)).isTrue();
         assertThat(continuous.open(5, 15, 1)).as("20 robots out through one door: going for carts or carrying")
                 .isFalse();
         assertThat(continuous.open(30, 29, 3)).isTrue();
         assertThat(continuous.open(30, 30, 3)).as("60 robots out through three doors, whatever the fleet's size")
                 .isFalse();
+        assertThat(continuous.open(19, 0, 0)).as("a map without a door counts as one").isTrue();
+        assertThat(continuous.order(1)).as("through one door").isEqualTo(CartChoice.Order.FARTHEST);
+        assertThat(continuous.order(3)).as("the farthest is through another door")
+                .isEqualTo(CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR);
     }
 
     @Test
     void aReleaseLetsAtLeastOneRobotGo() {
         assertThat(CartRelease.waves(0).open(0, 0, 1)).isTrue();
         assertThat(CartRelease.waves(0).open(1, 0, 1)).isFalse();
-        assertThat(CartRelease.continuous(0).open(0, 1, 1)).isTrue();
+        assertThat(CartRelease.continuous(0).open(0, 0, 1)).isTrue();
+        assertThat(CartRelease.continuous(0).open(0, 1, 1)).as("one robot per door, out already").isFalse();
     }
 
     @Test
@@ -76,7 +70,7 @@ class CartReleaseTest {
                 .as("robot2 waits behind the carrier, which must move first").isTrue();
         assertThat(waves.mayCarryBack("robot1", List.of(goingDown), List.of(carrier, onTheWay)))
                 .as("one group: the orchestrator resolves meetings at the door").isTrue();
-        assertThat(CartRelease.continuous(10).mayCarryBack("robot1", List.of(goingDown),
+        assertThat(CartRelease.continuous(20).mayCarryBack("robot1", List.of(goingDown),
                 with(carrier, onTheWay, others))).as("the planner's reservations order the door").isTrue();
     }
 
