@@ -96,7 +96,8 @@ final class Outbox implements AutoCloseable {
     /**
      * Hand the events appended since the last call, and the last acknowledgement, to the journal and the operating
      * system; compact the journal when it has grown. Called by the sender thread, whether or not the destination is
-     * online: a publishing node killed keeps what it accepted for a node that is away.
+     * online: a publishing node killed keeps what it accepted for a node that is away. When the write fails, the
+     * events stay unsent and are written at the next call.
      */
     void writeJournal() throws IOException {
         synchronized (journalLock) {
@@ -119,16 +120,26 @@ final class Outbox implements AutoCloseable {
                     through = lastSeq;
                 }
             }
-            if (keep != null) {
-                journal.rewrite(epoch, through, keep); // every event up to 'through' is acknowledged or kept
-            } else {
-                for (Pending p : events) {
-                    journal.append(p.seq(), p.json());
+            try {
+                if (keep != null) {
+                    journal.rewrite(epoch, through, keep); // every event up to 'through' is acknowledged or kept
+                } else {
+                    for (Pending p : events) {
+                        journal.append(p.seq(), p.json());
+                    }
+                    if (ack > 0) {
+                        journal.acked(ack);
+                    }
+                    journal.flush();
                 }
-                if (ack > 0) {
-                    journal.acked(ack);
+            } catch (IOException e) {
+                synchronized (this) { // written again at the next call; not sent before
+                    for (int i = events.size() - 1; i >= 0; i--) {
+                        unjournaled.addFirst(events.get(i));
+                    }
+                    ackToRecord = Math.max(ackToRecord, ack);
                 }
-                journal.flush();
+                throw e;
             }
             synchronized (this) {
                 journaledThrough = Math.max(journaledThrough, through);
