@@ -29,6 +29,8 @@ final class Compression {
     private static final int ZLIB_CMF = 0x78;
     private static final int CHUNK = 64 * 1024;
 
+    private final Object deflating = new Object();
+    private final Object inflating = new Object();
     private final Deflater deflater = new Deflater(Deflater.BEST_SPEED);
     private final Inflater inflater = new Inflater();
     private final byte[] deflateChunk = new byte[CHUNK];
@@ -45,16 +47,18 @@ final class Compression {
         return json.length < MIN_BYTES ? json : deflate(json);
     }
 
-    synchronized byte[] deflate(byte[] data) {
-        deflater.reset();
-        deflater.setInput(data);
-        deflater.finish();
-        ByteArrayOutputStream out = new ByteArrayOutputStream(Math.max(64, data.length / 4));
-        while (!deflater.finished()) {
-            int n = deflater.deflate(deflateChunk);
-            out.write(deflateChunk, 0, n);
+    byte[] deflate(byte[] data) {
+        synchronized (deflating) {
+            deflater.reset();
+            deflater.setInput(data);
+            deflater.finish();
+            ByteArrayOutputStream out = new ByteArrayOutputStream(Math.max(64, data.length / 4));
+            while (!deflater.finished()) {
+                int n = deflater.deflate(deflateChunk);
+                out.write(deflateChunk, 0, n);
+            }
+            return out.toByteArray();
         }
-        return out.toByteArray();
     }
 
     /**
@@ -63,28 +67,30 @@ final class Compression {
      * @throws MalformedException if it is not a complete zlib stream, or inflates to more than
      *             {@value #MAX_INFLATED_BYTES} bytes
      */
-    synchronized byte[] inflateIfDeflated(byte[] payload) throws MalformedException {
+    byte[] inflateIfDeflated(byte[] payload) throws MalformedException {
         if (!isDeflated(payload)) {
             return payload;
         }
-        inflater.reset();
-        inflater.setInput(payload);
-        ByteArrayOutputStream out = new ByteArrayOutputStream(Math.min(payload.length * 8, 1 << 20));
-        try {
-            while (!inflater.finished()) {
-                int n = inflater.inflate(inflateChunk);
-                if (n == 0 && (inflater.needsInput() || inflater.needsDictionary())) {
-                    throw new MalformedException("a deflated batch ends before its stream does");
+        synchronized (inflating) {
+            inflater.reset();
+            inflater.setInput(payload);
+            ByteArrayOutputStream out = new ByteArrayOutputStream(Math.min(payload.length * 8, 1 << 20));
+            try {
+                while (!inflater.finished()) {
+                    int n = inflater.inflate(inflateChunk);
+                    if (n == 0 && (inflater.needsInput() || inflater.needsDictionary())) {
+                        throw new MalformedException("a deflated batch ends before its stream does");
+                    }
+                    if (out.size() + n > MAX_INFLATED_BYTES) {
+                        throw new MalformedException("a deflated batch inflates to more than " + MAX_INFLATED_BYTES
+                                + " bytes");
+                    }
+                    out.write(inflateChunk, 0, n);
                 }
-                if (out.size() + n > MAX_INFLATED_BYTES) {
-                    throw new MalformedException("a deflated batch inflates to more than " + MAX_INFLATED_BYTES
-                            + " bytes");
-                }
-                out.write(inflateChunk, 0, n);
+            } catch (DataFormatException e) {
+                throw new MalformedException("a deflated batch is not a zlib stream: " + e.getMessage());
             }
-        } catch (DataFormatException e) {
-            throw new MalformedException("a deflated batch is not a zlib stream: " + e.getMessage());
+            return out.toByteArray();
         }
-        return out.toByteArray();
     }
 }

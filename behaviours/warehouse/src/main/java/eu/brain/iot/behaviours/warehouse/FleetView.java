@@ -1,9 +1,11 @@
 package eu.brain.iot.behaviours.warehouse;
 
 import java.util.ArrayList;
+import java.util.HashSet;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.Set;
 
 import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
@@ -74,6 +76,17 @@ public final class FleetView {
             }
         }
         return all;
+    }
+
+    /** @return the cells of the carts no robot carries: walls for a robot carrying a cart, which cannot pass under one */
+    public Set<Cell> cartsOnTheFloor() {
+        Set<Cell> cells = new HashSet<>();
+        for (CartState c : carts()) {
+            if (c.carriedBy() == null) {
+                cells.add(c.cell());
+            }
+        }
+        return cells;
     }
 
     /** @return the warehouse's map, or empty until the edge has read the fleet's world */

@@ -6,7 +6,7 @@
  * device-model APIs.
  */
 @Export
-@Version("2.3.0")
+@Version("2.4.0")
 package eu.brain.iot.behaviours.warehouse;
 
 import org.osgi.annotation.bundle.Export;

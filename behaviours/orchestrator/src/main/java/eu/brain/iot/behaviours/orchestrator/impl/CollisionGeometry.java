@@ -148,10 +148,7 @@ public final class CollisionGeometry {
             otherPath.add(c);
             c = c.toward(other.heading());
         }
-        Set<Cell> cartCells = new HashSet<>(); // a robot carrying a cart cannot drive under another
-        if (mover.carrying()) {
-            view.carts().stream().filter(k -> k.carriedBy() == null).forEach(k -> cartCells.add(k.cell()));
-        }
+        Set<Cell> cartCells = mover.carrying() ? view.cartsOnTheFloor() : Set.of();
         // and a cell the mover's own planner (a shortest path, robots ignored) reaches without meeting a robot
         java.util.function.Predicate<Cell> free = cell -> !otherPath.contains(cell) && !occupied.contains(cell)
                 && grid.area(cell) != Grid.DOORWAY && !cartCells.contains(cell)

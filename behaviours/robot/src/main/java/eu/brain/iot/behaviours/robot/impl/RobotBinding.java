@@ -411,10 +411,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         if (grid.isEmpty()) {
             return false;
         }
-        Set<Cell> carts = new HashSet<>();
-        if (s.carrying()) {
-            fleet.view().carts().stream().filter(c -> c.carriedBy() == null).forEach(c -> carts.add(c.cell()));
-        }
+        Set<Cell> carts = s.carrying() ? fleet.view().cartsOnTheFloor() : Set.of();
         List<Cell> way = grid.get().path(s.cell(), s.goal(), carts);
         if (way == null) {
             return false;

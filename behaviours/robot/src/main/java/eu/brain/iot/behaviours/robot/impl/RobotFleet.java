@@ -395,9 +395,9 @@ public final class RobotFleet {
         if (s.isEmpty() || grid.isEmpty() || !errands.walledIn(robot, s.get().cell(), drop, view.carts(), grid.get())) {
             return;
         }
-        Errands.Errand e = errands.of(robot);
-        LOG.log(System.Logger.Level.WARNING, "{0}: now to {1}", robot, e.drop() == null ? "a storage cell chosen as it"
-                + " goes" : e.drop().equals(s.get().cell()) ? "the storage cell it stands on" : e.drop());
+        Cell next = errands.of(robot).drop();
+        LOG.log(System.Logger.Level.WARNING, "{0}: now to {1}", robot,
+                next != null ? next : "a storage cell chosen as it goes");
         resume(robot, "its storage cell walled in by carts");
     }
 

@@ -130,8 +130,9 @@ final class TrafficControl {
                 return;
             }
         }
+        Set<Cell> cartCells = view.cartsOnTheFloor();
         boolean[] carts = new boolean[map.cells()];
-        view.carts().stream().filter(c -> c.carriedBy() == null).forEach(c -> carts[map.cell(c.cell())] = true);
+        cartCells.forEach(c -> carts[map.cell(c)] = true);
         planner.carts(carts);
         Map<String, RobotState> states = new HashMap<>();
         for (RobotState s : robots) {
@@ -166,25 +167,16 @@ final class TrafficControl {
                 send(s, planner.path(index.get(s.id())));
             }
         }
-        checkWalledIn(states.values(), grid.get());
+        checkWalledIn(states.values(), grid.get(), cartCells);
     }
 
     /** Carriers that make no progress: each whose goal no path reaches around the carts is told ({@link #walledIn}). */
-    private void checkWalledIn(Iterable<RobotState> robots, Grid grid) {
-        Set<Cell> carts = null;
+    private void checkWalledIn(Iterable<RobotState> robots, Grid grid, Set<Cell> carts) {
         for (RobotState s : robots) {
             int stuck = planner.stuck(index.get(s.id()));
             Cell goal = goals.get(s.id());
             if (!s.carrying() || goal == null || stuck < WALLED_IN_ROUNDS || stuck % WALLED_IN_ROUNDS != 0) {
                 continue;
-            }
-            if (carts == null) {
-                carts = new HashSet<>();
-                for (FleetView.CartState c : view.carts()) {
-                    if (c.carriedBy() == null) {
-                        carts.add(c.cell());
-                    }
-                }
             }
             if (!goal.equals(s.cell()) && grid.path(s.cell(), goal, carts) == null) {
                 LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which no path reaches around the"
