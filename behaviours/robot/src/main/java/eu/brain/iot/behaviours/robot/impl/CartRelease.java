@@ -64,7 +64,16 @@ final class CartRelease {
         if (!perDoor) {
             return carrying == 0 && goingForCarts < robots;
         }
-        return goingForCarts + carrying < (long) robots * Math.max(1, doors);
+        return goingForCarts + carrying < robotsOut(doors);
+    }
+
+    /**
+     * @param doors the warehouse's doors
+     * @return the most robots out on errands for carts at once: a wave's robots, or the robots per door times the
+     *         doors (at least one counts)
+     */
+    long robotsOut(int doors) {
+        return perDoor ? (long) robots * Math.max(1, doors) : robots;
     }
 
     /**

@@ -52,6 +52,8 @@ final class Errands {
     private final Set<String> adopted = new HashSet<>();
     /** Storage cells given to a cart being carried there. */
     private final Set<Cell> drops = new HashSet<>();
+    /** Through several doors, which doors a claim may take its cart behind. */
+    private final DoorShares doorShares = new DoorShares();
     private int delivered;
 
     /** @param wave robots that may go for carts at once, in waves (at least 1) */
@@ -221,16 +223,27 @@ final class Errands {
     }
 
     /**
-     * Claims a waiting cart (which one: {@link CartRelease#order}, {@link CartChoice}) for a
-     * robot without an errand, when the wave is open ({@link #waveOpen}).
+     * Claims a waiting cart (which one: {@link CartRelease#order}, {@link CartChoice}; through several doors, behind
+     * a door that has fewer robots out than its share, {@link DoorShares}) for a robot without an errand, when the
+     * wave is open ({@link #waveOpen}).
+     *
+     * @param fleet the robots of the fleet
      */
-    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid) {
+    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid, int fleet) {
         if (!waveOpen(grid)) {
             return Optional.empty();
         }
+        int doors = grid.cells(Grid.DOORWAY).size();
         List<CartState> candidates = carts.stream().filter(c -> waiting(c, grid) && !claimed(c.id())).toList();
-        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid,
-                release.order(grid.cells(Grid.DOORWAY).size()));
+        CartChoice.Order order = release.order(doors);
+        if (order == CartChoice.Order.DEEPEST_BEHIND_NEAREST_DOOR) {
+            List<Cell> out = errands.values().stream()
+                    .filter(x -> (x.leg() == Leg.TO_CART || x.leg() == Leg.TO_STORAGE) && x.cartCell() != null)
+                    .map(Errand::cartCell).toList();
+            candidates = doorShares.behindOpenDoors(candidates, out,
+                    (int) Math.min(fleet, release.robotsOut(doors)), grid);
+        }
+        Optional<CartState> chosen = CartChoice.choose(at, candidates, grid, order);
         if (chosen.isEmpty()) {
             return Optional.empty();
         }

@@ -36,6 +36,8 @@ class ErrandsTest {
             "######D#######",
             "#uuuuuuuuuuuu#",
             "##############"));
+    /** The robots of the fleet the claims are made in. */
+    private static final int FLEET = 6;
 
     @Test
     void storageIsFilledToTheLastCellWithoutWallingAnyIn() {
@@ -49,7 +51,7 @@ class ErrandsTest {
             Cell dock = new Cell(k, 1);
             errands.seen(robot, dock, true);
             carts.add(new CartState("cart" + n, cartCell, null));
-            assertThat(errands.claim(robot, dock, carts, BAND)).as("cart %d claimed", n).isPresent();
+            assertThat(errands.claim(robot, dock, carts, BAND, FLEET)).as("cart %d claimed", n).isPresent();
             Optional<Errands.Errand> e = errands.lifted(robot, cartCell, carriedBy(carts, n, robot), BAND);
             assertThat(e).as("a storage cell for cart %d of %d (placed so far: %s)", n + 1, storage, carts)
                     .isPresent();
@@ -72,8 +74,8 @@ class ErrandsTest {
                 new CartState("cart1", new Cell(7, 8), null)));
         errands.seen("robot1", new Cell(1, 1), true);
         errands.seen("robot2", new Cell(2, 1), true);
-        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND)).isPresent();
-        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND)).isPresent();
+        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND, FLEET)).isPresent();
+        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND, FLEET)).isPresent();
         Cell drop = errands.lifted("robot1", cartCell, carriedBy(carts, 0, "robot1"), BAND).orElseThrow().drop();
 
         errands.release("robot1"); // its go-tos to storage refused too often (its node handing it over)
@@ -100,15 +102,15 @@ class ErrandsTest {
                 new CartState("cart1", new Cell(7, 8), null)));
         errands.seen("robot1", new Cell(1, 1), true);
         errands.seen("robot2", new Cell(2, 1), true);
-        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND)).isPresent();
+        assertThat(errands.claim("robot1", new Cell(1, 1), carts, BAND, FLEET)).isPresent();
         errands.lifted("robot1", cartCell, carriedBy(carts, 0, "robot1"), BAND).orElseThrow();
 
         errands.cartDown("robot1", cartCell, BAND); // its pick failed: cart0 still stands on the table
         assertThat(errands.of("robot1").leg()).as("robot1 carries nothing").isEqualTo(Errands.Leg.NONE);
         assertThat(errands.claimed("cart0")).as("cart0 claimable again").isFalse();
-        assertThat(errands.claim("robot1", new Cell(6, 6), carts, BAND)).as("a cart to fetch again").isPresent();
+        assertThat(errands.claim("robot1", new Cell(6, 6), carts, BAND, FLEET)).as("a cart to fetch again").isPresent();
 
-        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND)).isPresent();
+        assertThat(errands.claim("robot2", new Cell(2, 1), carts, BAND, FLEET)).isPresent();
         Cell carriedFrom = errands.of("robot2").cartCell();
         Cell drop = errands.lifted("robot2", carriedFrom, carriedBy(carts, 1, "robot2"), BAND).orElseThrow().drop();
         errands.cartDown("robot2", drop, BAND); // put down in storage before the behaviour saw it placed
@@ -184,7 +186,7 @@ class ErrandsTest {
         List<CartState> floor = List.of(new CartState("cart2", new Cell(8, 8), null));
         errands.placed("robot1");
         errands.docked("robot1");
-        errands.claim("robot2", new Cell(3, 1), floor, BAND);
+        errands.claim("robot2", new Cell(3, 1), floor, BAND, FLEET);
         assertThat(errands.goalFailed("robot2", new Cell(3, 1), new Cell(8, 8), floor, BAND)).isTrue();
         assertThat(errands.of("robot2").leg()).isEqualTo(Errands.Leg.NONE);
         assertThat(errands.workLeft(floor, BAND)).as("cart2 back on the table").isTrue();
@@ -220,7 +222,7 @@ class ErrandsTest {
         Cell dock = new Cell(2, 1);
         Cell cartCell = new Cell(4, 8);
         errands.seen("robot1", dock, true);
-        errands.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND);
+        errands.claim("robot1", dock, List.of(new CartState("cart1", cartCell, null)), BAND, FLEET);
         return errands.lifted("robot1", cartCell, List.of(new CartState("cart1", cartCell, "robot1")), BAND)
                 .orElseThrow().drop();
     }
