@@ -132,6 +132,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private final Set<String> moved = new HashSet<>();
     /** Per robot: the model's state when the binding last published for it, and when. */
     private final Map<String, Published> published = new HashMap<>();
+    private final StandingWatch standing = new StandingWatch();
     private final long pollNanos;
 
     /** The model's state (places and data) of a robot when an event was published for it. */
@@ -297,6 +298,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             data = data(in);
             e = fleet.errands().of(robot);
         }
+        standing.look(robot, s.cell(), e, places).ifPresent(line -> LOG.log(System.Logger.Level.WARNING, line));
         if (places.size() != 1) {
             return;
         }
