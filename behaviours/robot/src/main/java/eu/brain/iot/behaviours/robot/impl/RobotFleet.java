@@ -387,7 +387,8 @@ public final class RobotFleet {
 
     /**
      * Under the traffic planner: the robot carries its cart to a storage cell no path reaches around the carts any
-     * more ({@link TrafficControl#WALLED_IN_ROUNDS}); it is given another ({@link Errands#walledIn}) and goes on.
+     * more, or only the long way round, which the planner does not see ({@link TrafficControl#WALLED_IN_ROUNDS}); it
+     * is given another ({@link Errands#walledIn}) and goes on.
      */
     private void walledIn(String robot, Cell drop) {
         Optional<RobotState> s = view.robot(robot);

@@ -170,17 +170,30 @@ final class TrafficControl {
         checkWalledIn(states.values(), grid.get(), cartCells);
     }
 
-    /** Carriers that make no progress: each whose goal no path reaches around the carts is told ({@link #walledIn}). */
+    /**
+     * Carriers that make no progress: each whose goal no path reaches around the carts, or only a way longer than the
+     * one through the carts, is told ({@link #walledIn}). The planner's distances see the map without the carts (they
+     * are kept per goal for many rounds), so for a carrier two cells from its goal behind a row of carts every cell of
+     * the way around looks farther than where it stands, and beyond the window it would stand there for ever (three
+     * carriers in a 120-robot run).
+     */
     private void checkWalledIn(Iterable<RobotState> robots, Grid grid, Set<Cell> carts) {
         for (RobotState s : robots) {
             int stuck = planner.stuck(index.get(s.id()));
             Cell goal = goals.get(s.id());
-            if (!s.carrying() || goal == null || stuck < WALLED_IN_ROUNDS || stuck % WALLED_IN_ROUNDS != 0) {
+            if (!s.carrying() || goal == null || goal.equals(s.cell()) || stuck < WALLED_IN_ROUNDS
+                    || stuck % WALLED_IN_ROUNDS != 0) {
                 continue;
             }
-            if (!goal.equals(s.cell()) && grid.path(s.cell(), goal, carts) == null) {
+            List<Cell> around = grid.path(s.cell(), goal, carts);
+            if (around == null) {
                 LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which no path reaches around the"
                         + " carts any more", s.id(), goal);
+                walledIn.accept(s.id(), goal);
+            } else if (around.size() > grid.steps(s.cell(), goal, Set.of())) {
+                LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which the carts on the floor put {2}"
+                        + " steps away instead of {3}", s.id(), goal, around.size(),
+                        grid.steps(s.cell(), goal, Set.of()));
                 walledIn.accept(s.id(), goal);
             }
         }

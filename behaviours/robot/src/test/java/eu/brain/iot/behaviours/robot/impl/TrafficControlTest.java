@@ -92,6 +92,38 @@ class TrafficControlTest {
         assertThat(walledIn).containsExactly("robot1 (10,2)");
     }
 
+    /**
+     * A row of carts between a carrier and its goal two cells away, open only at both ends 15 cells off: the way round
+     * is longer than the planner's window, and every cell of it looks farther from the goal than where the robot
+     * stands (the planner's distances see the map without the carts), so the planner holds it there; after
+     * {@link TrafficControl#WALLED_IN_ROUNDS} rounds without progress it is reported like a walled-in goal.
+     */
+    @Test
+    void aCarrierWhoseGoalOnlyTheLongWayRoundReachesIsReportedAfterRoundsWithoutProgress() {
+        Model wide = new Model(String.join("\n",
+                "##################################",
+                "#................................#",
+                "#................................#",
+                "#................................#",
+                "##################################"));
+        List<String> told = new ArrayList<>();
+        TrafficControl control = new TrafficControl(new FleetView(wide), commands, 16, TimeUnit.SECONDS.toNanos(5),
+                (robot, goal) -> told.add(robot + " " + goal));
+        wide.carrying("cart1");
+        wide.robot(16, 3, "stopped", 0, null, null);
+        for (int x = 2; x <= 31; x++) {
+            wide.cartOnTheFloor("cart" + (100 + x), x, 2);
+        }
+        control.goal("robot1", new Cell(16, 1));
+        control.step(); // its first round with this goal
+        for (int round = 1; round <= TrafficControl.WALLED_IN_ROUNDS; round++) {
+            assertThat(told).as("round %d", round).isEmpty();
+            control.step();
+        }
+        assertThat(bus.sent).as("held where it stands: no leg sent").isEmpty();
+        assertThat(told).containsExactly("robot1 (16,1)");
+    }
+
     @Test
     void aRobotBlockedOnItsLegForThreeLooksHasItCancelled() {
         Cell end = firstLeg();
@@ -129,9 +161,18 @@ class TrafficControlTest {
 
     /** The edge's device model of one robot on {@link #MAP}. */
     private static final class Model implements DeviceModel {
+        private final String map;
         private ProviderSnapshot robot;
         private final List<ProviderSnapshot> carts = new ArrayList<>();
         private String cart;
+
+        Model() {
+            this(MAP);
+        }
+
+        Model(String map) {
+            this.map = map;
+        }
 
         /** The robot carries this cart from now on (set before {@link #robot}). */
         void carrying(String id) {
@@ -180,7 +221,7 @@ class TrafficControlTest {
         @Override
         public Optional<ResourceValue> resource(String providerId, String service, String resource) {
             if ("warehouse".equals(providerId) && "map".equals(service) && "rows".equals(resource)) {
-                return Optional.of(new ResourceValue("warehouse", "map", "rows", MAP, Instant.now(),
+                return Optional.of(new ResourceValue("warehouse", "map", "rows", map, Instant.now(),
                         ResourceStatus.OK));
             }
             return Optional.empty();
