@@ -191,7 +191,7 @@ final class TrafficControl {
                         + " carts any more", s.id(), goal);
                 walledIn.accept(s.id(), goal);
             } else if (around.size() > grid.steps(s.cell(), goal, Set.of())) {
-                LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which the carts on the floor put {2}"
+                LOG.log(System.Logger.Level.INFO, "{0} carries its cart to {1}, which the carts on the floor put {2}"
                         + " steps away instead of {3}", s.id(), goal, around.size(),
                         grid.steps(s.cell(), goal, Set.of()));
                 walledIn.accept(s.id(), goal);
