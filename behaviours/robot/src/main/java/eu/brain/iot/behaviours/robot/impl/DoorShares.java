@@ -13,9 +13,9 @@ import eu.brain.iot.behaviours.warehouse.Grid;
 /**
  * Through several doors, behind which doors a robot about to claim a cart may take it: each door gets a share of the
  * robots out on errands for carts in proportion to its carts not yet placed, so that the doors run out of carts
- * together. Carts fall unevenly behind the doors (120x40, 3 doors, seed 15: 37, 47 and 36 of 120), and with every
- * robot working the door nearest its dock, the door with the most carts kept its robots for one errand more after the
- * others had finished (its last cart placed 65 s of warehouse time after the first door's).
+ * together. Carts fall unevenly behind the doors, and with every robot working the door nearest its dock, the door
+ * with the most carts keeps its robots for one errand more after the others have finished (BENCHMARKS.md, "With the
+ * traffic planner").
  * <p>
  * A cart is behind the doorway nearest it by path. A door's carts not yet placed are its unclaimed carts and those of
  * robots going for or carrying one of its carts; its share of the robots out is that fraction of {@code robotsOut}

@@ -310,9 +310,9 @@ final class Errands {
     /**
      * The robot carries its cart to a storage cell it can no longer reach around the carts on the floor, or only the
      * long way round (carts put down since walled that cell, or the robot, in; the traffic planner finds no path there
-     * and no go-to fails to say so): it is given another storage cell, the nearest it can reach from where it stands
-     * ({@link #goalFailed}), and when
-     * there is none but it stands on a free storage cell, that cell: its cart is in storage either way.
+     * and no go-to fails to say so): it is given another storage cell it can reach from where it stands, chosen as at
+     * the lift ({@link #goalFailed}, {@link StorageChoice}), and when there is none but it stands on a free storage
+     * cell, that cell: its cart is in storage either way.
      *
      * @return whether the errand changed
      */

@@ -174,8 +174,8 @@ final class TrafficControl {
      * Carriers that make no progress: each whose goal no path reaches around the carts, or only a way longer than the
      * one through the carts, is told ({@link #walledIn}). The planner's distances see the map without the carts (they
      * are kept per goal for many rounds), so for a carrier two cells from its goal behind a row of carts every cell of
-     * the way around looks farther than where it stands, and beyond the window it would stand there for ever (three
-     * carriers in a 120-robot run).
+     * the way round looks farther than where it stands, and with the way round longer than the window the planner
+     * holds it there for ever.
      */
     private void checkWalledIn(Iterable<RobotState> robots, Grid grid, Set<Cell> carts) {
         for (RobotState s : robots) {
