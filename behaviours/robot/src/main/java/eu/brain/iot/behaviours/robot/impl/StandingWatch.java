@@ -9,8 +9,9 @@ import eu.brain.iot.behaviours.warehouse.Cell;
 
 /**
  * Tells, once per stand, of a robot that has stood on one cell with an errand for {@link #LOOKS} looks at it (a look
- * per poll, a minute of warehouse time, or less with the events about it in between): where, its errand, and its model's places, so that a robot left behind by the rules shows in the
- * node's log with what it waits for. A robot that moves, or whose errand or places change, starts a new stand.
+ * per poll, a minute of warehouse time, or less with the events about it in between): where, its errand, and its
+ * model's places, so that a robot left behind by the rules shows in the node's log with what it waits for. A robot
+ * that moves, or whose errand or places change, starts a new stand.
  * <p>
  * Not thread-safe: owned by the binding's thread.
  */

@@ -186,14 +186,14 @@ final class TrafficControl {
                 continue;
             }
             List<Cell> around = grid.path(s.cell(), goal, carts);
+            int through = grid.steps(s.cell(), goal, Set.of());
             if (around == null) {
                 LOG.log(System.Logger.Level.WARNING, "{0} carries its cart to {1}, which no path reaches around the"
                         + " carts any more", s.id(), goal);
                 walledIn.accept(s.id(), goal);
-            } else if (around.size() > grid.steps(s.cell(), goal, Set.of())) {
+            } else if (around.size() > through) {
                 LOG.log(System.Logger.Level.INFO, "{0} carries its cart to {1}, which the carts on the floor put {2}"
-                        + " steps away instead of {3}", s.id(), goal, around.size(),
-                        grid.steps(s.cell(), goal, Set.of()));
+                        + " steps away instead of {3}", s.id(), goal, around.size(), through);
                 walledIn.accept(s.id(), goal);
             }
         }

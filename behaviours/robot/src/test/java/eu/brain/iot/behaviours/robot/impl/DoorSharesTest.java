@@ -61,10 +61,12 @@ class DoorSharesTest {
     }
 
     @Test
-    void aDoorWithoutUnclaimedCartsIsNeverOpenAndOneDoorIsAlwaysOpen() {
+    void whenNoDoorIsUnderItsShareEveryDoorWithUnclaimedCartsIsOpenAndOneDoorHasNoShares() {
         DoorShares shares = new DoorShares();
         List<CartState> right = carts("r", 7, 3);
-        assertThat(shares.behindOpenDoors(right, List.of(LEFT, LEFT, LEFT, LEFT), 8, TWO_DOORS))
+        List<Cell> out = List.of(RIGHT, RIGHT, RIGHT, RIGHT, RIGHT, RIGHT, LEFT, LEFT, LEFT, LEFT);
+        assertThat(shares.behindOpenDoors(right, out, 8, TWO_DOORS))
+                .as("right share 8 x 9/13 < 6 robots, left none unclaimed: the carts left are claimed all the same")
                 .containsExactlyElementsOf(right);
         Grid oneDoor = Grid.parse(String.join("\n",
                 "###########",
