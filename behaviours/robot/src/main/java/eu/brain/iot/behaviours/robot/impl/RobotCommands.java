@@ -30,6 +30,8 @@ final class RobotCommands {
     private final Map<String, ArrayDeque<Waiting>> queues = new HashMap<>();
     /** Per robot: the fleet's mission id of the last pick it accepted. */
     private final Map<String, Long> lastPick = new HashMap<>();
+    /** Per robot: the fleet's mission id of the last go-to it accepted. */
+    private final Map<String, Long> lastGoTo = new HashMap<>();
 
     RobotCommands(CommandLedger ledger) {
         this.ledger = ledger;
@@ -56,9 +58,13 @@ final class RobotCommands {
     CommandLedger.Sent answered(CommandOutcome o) {
         CommandLedger.Sent sent = ledger.answered(o);
         if (sent != null) {
-            if (sent.command() instanceof PickCartCommand && o.accepted && o.missionId != null) {
+            if (o.accepted && o.missionId != null) {
                 synchronized (this) {
-                    lastPick.put(sent.command().deviceId, o.missionId);
+                    if (sent.command() instanceof PickCartCommand) {
+                        lastPick.put(sent.command().deviceId, o.missionId);
+                    } else if (sent.command() instanceof GoToCommand) {
+                        lastGoTo.put(sent.command().deviceId, o.missionId);
+                    }
                 }
             }
             next(sent.command().deviceId);
@@ -79,6 +85,28 @@ final class RobotCommands {
         }
         Long pick = lastPick.get(robot);
         return pick != null && (shownMission == null || shownMission < pick);
+    }
+
+    /**
+     * Whether a go-to sent to the robot has not shown in the device model yet: it waits for its turn, waits for the
+     * edge's answer, or was accepted as a mission newer than the one the device model shows. Until it shows, the
+     * model's mission and cell are older than the go-to, and a go-to sent on them would queue behind it.
+     *
+     * @param shownMission the robot's mission as the device model shows it ({@code null}: none yet)
+     */
+    synchronized boolean goToUnseen(String robot, Long shownMission) {
+        ArrayDeque<Waiting> q = queues.get(robot);
+        if (q != null && q.stream().anyMatch(w -> w.command() instanceof GoToCommand)) {
+            return true;
+        }
+        Long go = lastGoTo.get(robot);
+        return go != null && (shownMission == null || shownMission < go);
+    }
+
+    /** @return whether a command sent to the robot has no answer from the edge yet */
+    synchronized boolean unanswered(String robot) {
+        ArrayDeque<Waiting> q = queues.get(robot);
+        return q != null && !q.isEmpty();
     }
 
     private void next(String robot) {

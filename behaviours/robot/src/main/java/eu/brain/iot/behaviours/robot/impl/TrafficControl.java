@@ -155,7 +155,7 @@ final class TrafficControl {
         counts.rounds.incrementAndGet();
         for (RobotState s : states.values()) {
             if (s.reachable() && !s.idle() && s.facesRobot() && !s.running()) {
-                if (blockedLooks.merge(s.id(), 1, Integer::sum) >= BLOCKED_LOOKS) {
+                if (!commands.unanswered(s.id()) && blockedLooks.merge(s.id(), 1, Integer::sum) >= BLOCKED_LOOKS) {
                     cancelLeg(s); // its leg met a robot late or early: planned again from where it stands
                 }
                 continue;
@@ -264,9 +264,15 @@ final class TrafficControl {
         commands.send(cancel, "its leg is blocked by another robot: planned again");
     }
 
-    /** Whether the robot was sent on a leg so recently that the edge may not show the go-to yet. */
+    /**
+     * Whether the robot's last leg may not show in the edge's device model yet: its go-to is not answered, or
+     * answered as a mission newer than the one the model shows, or it was sent so recently that the edge may not show
+     * it. A leg sent before the last one shows would be planned from a cell the robot has left and would queue behind
+     * the last one: a cancel would then end only the first, and the robot would drive on along the stale one.
+     */
     private boolean pending(RobotState s) {
-        return System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
+        return commands.goToUnseen(s.id(), s.missionId())
+                || System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
     }
 
     /** Sends the robot on the straight run of moves its plan starts with, if it moves at once. */

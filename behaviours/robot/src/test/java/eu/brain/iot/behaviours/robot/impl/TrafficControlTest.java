@@ -136,6 +136,47 @@ class TrafficControlTest {
         assertThat(bus.sent).hasSize(2).last().isInstanceOf(CancelMissionCommand.class);
     }
 
+    /**
+     * The edge shows a go-to only a while after it was sent (its answer, then the next poll): until then the robot
+     * looks idle where it stood, and a leg planned from there would queue behind the one it drives.
+     */
+    @Test
+    void aLegIsNotSentAgainBeforeTheDeviceModelShowsItsMission() {
+        TrafficControl control = new TrafficControl(new FleetView(model), commands, 16, 0, (robot, goal) -> { });
+        model.robot(1, 1, "stopped", 0, null, null);
+        control.goal("robot1", new Cell(10, 2));
+        control.step();
+        GoToCommand first = lastGoTo();
+        Cell end = new Cell(first.x, first.y);
+        control.step();
+        assertThat(bus.sent).as("not answered yet").hasSize(1);
+
+        answer(first, 7L);
+        control.step();
+        assertThat(bus.sent).as("accepted as mission 7, the model still shows mission 1").hasSize(1);
+
+        model.missionId = 7;
+        model.robot(end.x(), end.y(), "stopped", 0, "finished", end);
+        control.step();
+        assertThat(bus.sent).as("mission 7 shown done at the leg's end: the next leg").hasSize(2);
+        GoToCommand next = lastGoTo();
+        assertThat(inLine(end, new Cell(next.x, next.y))).isTrue();
+    }
+
+    @Test
+    void aBlockedLegIsCancelledOnceWhileTheCancelIsNotAnswered() {
+        Cell end = firstLeg();
+        Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
+        model.robot(before.x(), before.y(), "stopped", 1, "running", end);
+        for (int look = 0; look < 3 * 3; look++) {
+            traffic.step();
+        }
+        assertThat(bus.sent).as("the go-to, then one cancel").hasSize(2).last()
+                .isInstanceOf(CancelMissionCommand.class);
+        answer(bus.sent.get(1));
+        assertThat(bus.sent).as("no second cancel queued behind the first").hasSize(2);
+    }
+
     private GoToCommand lastGoTo() {
         assertThat(bus.sent).isNotEmpty().last().isInstanceOf(GoToCommand.class);
         return (GoToCommand) bus.sent.get(bus.sent.size() - 1);
@@ -143,7 +184,13 @@ class TrafficControlTest {
 
     /** The edge answers the command: the robot's next command may go out. */
     private void answer(EdgeCommand c) {
+        answer(c, null);
+    }
+
+    /** The edge answers the command, a mission the robot queued as {@code missionId}. */
+    private void answer(EdgeCommand c, Long missionId) {
         CommandOutcome o = new CommandOutcome();
+        o.missionId = missionId;
         o.commandId = c.commandId;
         o.deviceId = c.deviceId;
         o.accepted = true;
@@ -184,6 +231,9 @@ class TrafficControlTest {
                     Map.of("x", value("position", "x", x), "y", value("position", "y", y))), Map.of()));
         }
 
+        /** The id of the mission the robot shows. */
+        long missionId = 1;
+
         void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
             Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
             services.put("position", Map.of("x", value("position", "x", x), "y", value("position", "y", y),
@@ -192,7 +242,7 @@ class TrafficControlTest {
                     "detect", value("state", "detect", detect)));
             if (missionState != null) {
                 services.put("mission", Map.of("type", value("mission", "type", "goto"),
-                        "state", value("mission", "state", missionState), "id", value("mission", "id", 1L),
+                        "state", value("mission", "state", missionState), "id", value("mission", "id", missionId),
                         "goalX", value("mission", "goalX", goal.x()), "goalY", value("mission", "goalY", goal.y())));
             }
             if (cart != null) {
