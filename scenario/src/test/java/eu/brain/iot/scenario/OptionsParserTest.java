@@ -16,12 +16,12 @@ import eu.brain.iot.federation.impl.FabricKey;
 class OptionsParserTest {
 
     @Test
-    void defaultsAreThePapersWarehouseTenTimesFasterWithATenSecondLimit() throws Exception {
+    void defaultsAreThePapersWarehouseFiveTimesFasterWithATenSecondLimit() throws Exception {
         Options o = OptionsParser.parse();
         assertThat(o.map()).isNull();
         assertThat(o.generate()).isNull();
-        assertThat(o.speed()).isEqualTo(10);
-        assertThat(o.pollPeriodMs()).as("0.5 s of warehouse time").isEqualTo(50);
+        assertThat(o.speed()).isEqualTo(5);
+        assertThat(o.pollPeriodMs()).as("0.5 s of warehouse time").isEqualTo(100);
         assertThat(o.waitLimitMs()).isEqualTo(10_000);
         assertThat(o.waitLimitSteps()).as("robot-sim's --deadlock-steps").isEqualTo(20);
         assertThat(o.deadlineMs()).isEqualTo(30 * 60_000);
