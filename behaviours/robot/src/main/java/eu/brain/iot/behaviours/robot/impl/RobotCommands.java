@@ -30,8 +30,12 @@ final class RobotCommands {
     private final Map<String, ArrayDeque<Waiting>> queues = new HashMap<>();
     /** Per robot: the fleet's mission id of the last pick it accepted. */
     private final Map<String, Long> lastPick = new HashMap<>();
-    /** Per robot: the fleet's mission id of the last go-to it accepted. */
-    private final Map<String, Long> lastGoTo = new HashMap<>();
+    /** Per robot: the last go-to it accepted. */
+    private final Map<String, Accepted> lastGoTo = new HashMap<>();
+
+    /** A go-to the robot accepted: the fleet's id of its mission, and when the answer came. */
+    private record Accepted(long missionId, long atNanos) {
+    }
 
     RobotCommands(CommandLedger ledger) {
         this.ledger = ledger;
@@ -63,7 +67,7 @@ final class RobotCommands {
                     if (sent.command() instanceof PickCartCommand) {
                         lastPick.put(sent.command().deviceId, o.missionId);
                     } else if (sent.command() instanceof GoToCommand) {
-                        lastGoTo.put(sent.command().deviceId, o.missionId);
+                        lastGoTo.put(sent.command().deviceId, new Accepted(o.missionId, System.nanoTime()));
                     }
                 }
             }
@@ -89,18 +93,21 @@ final class RobotCommands {
 
     /**
      * Whether a go-to sent to the robot has not shown in the device model yet: it waits for its turn, waits for the
-     * edge's answer, or was accepted as a mission newer than the one the device model shows. Until it shows, the
-     * model's mission and cell are older than the go-to, and a go-to sent on them would queue behind it.
+     * edge's answer, or was accepted, less than {@code lostNanos} ago, as a mission newer than the one the device model
+     * shows. Until it shows, the model's mission and cell are older than the go-to, and a go-to sent on them would
+     * queue behind it. One accepted longer ago and never shown is taken as lost.
      *
      * @param shownMission the robot's mission as the device model shows it ({@code null}: none yet)
+     * @param lostNanos    how long after its acceptance a go-to may not show yet
      */
-    synchronized boolean goToUnseen(String robot, Long shownMission) {
+    synchronized boolean goToUnseen(String robot, Long shownMission, long lostNanos) {
         ArrayDeque<Waiting> q = queues.get(robot);
         if (q != null && q.stream().anyMatch(w -> w.command() instanceof GoToCommand)) {
             return true;
         }
-        Long go = lastGoTo.get(robot);
-        return go != null && (shownMission == null || shownMission < go);
+        Accepted go = lastGoTo.get(robot);
+        return go != null && (shownMission == null || shownMission < go.missionId())
+                && System.nanoTime() - go.atNanos() < lostNanos;
     }
 
     /** @return whether a command sent to the robot has no answer from the edge yet */

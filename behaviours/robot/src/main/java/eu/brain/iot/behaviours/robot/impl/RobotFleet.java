@@ -54,6 +54,8 @@ import eu.brain.iot.eventing.api.EventBus;
 public final class RobotFleet {
 
     private static final System.Logger LOG = System.getLogger(RobotFleet.class.getName());
+    /** Polls after its acceptance within which a leg's go-to shows in the device model, or is taken as lost. */
+    private static final int SHOWN_WITHIN_POLLS = 20;
 
     private final FleetView view;
     private final CommandLedger ledger;
@@ -110,7 +112,7 @@ public final class RobotFleet {
         this.pendingNanos = pollNanos * 8;
         this.traffic = config.traffic()
                 ? new TrafficControl(view, commands, Math.max(2, config.traffic_window()), pollNanos * 4,
-                        this::walledIn) : null;
+                        pollNanos * SHOWN_WITHIN_POLLS, this::walledIn) : null;
         this.aside = new SideSteps(pollNanos * 20); // 20 polls of warehouse time at most
         this.thread = new BindingThread("robot-fleet", config.speed(), config.poll_period_ms());
     }

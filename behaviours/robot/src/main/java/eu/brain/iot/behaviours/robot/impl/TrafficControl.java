@@ -59,6 +59,8 @@ final class TrafficControl {
     /** When each robot was last sent on a leg (a go-to the edge has not shown yet counts as driven along). */
     private final Map<String, Long> legSince = new HashMap<>();
     private final long pendingNanos;
+    /** How long after the edge accepted a leg's go-to the device model may not show it yet; then it is lost. */
+    private final long shownWithinNanos;
     /** Robots seen offline and not sent on a leg since (the first leg after is logged: it shows they drive on). */
     private final Set<String> wereOffline = new HashSet<>();
     /** Looks in a row each robot on a leg stood behind another robot. */
@@ -84,14 +86,16 @@ final class TrafficControl {
 
     /**
      * @param window       steps the planner looks ahead
-     * @param pendingNanos how long a go-to sent may not show in the edge's device model yet
+     * @param pendingNanos how long a go-to sent may not show in the edge's device model yet, at least
+     * @param shownWithinNanos how long after the edge accepted it a go-to may not show in the model yet, at most
      * @param walledIn     told a robot carrying a cart whose goal no path reaches around the carts any more, and
      *                     that goal (on this class's thread)
      */
-    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos,
+    TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, long shownWithinNanos,
             BiConsumer<String, Cell> walledIn) {
         this.walledIn = walledIn;
         this.pendingNanos = pendingNanos;
+        this.shownWithinNanos = shownWithinNanos;
         this.view = view;
         this.commands = commands;
         this.counts = new CommandLedgerCounts();
@@ -266,12 +270,12 @@ final class TrafficControl {
 
     /**
      * Whether the robot's last leg may not show in the edge's device model yet: its go-to is not answered, or
-     * answered as a mission newer than the one the model shows, or it was sent so recently that the edge may not show
-     * it. A leg sent before the last one shows would be planned from a cell the robot has left and would queue behind
+     * answered as a mission newer than the one the model shows (for {@link #shownWithinNanos} at most), or it was sent
+     * so recently that the edge may not show it. A leg sent before the last one shows would be planned from a cell the robot has left and would queue behind
      * the last one: a cancel would then end only the first, and the robot would drive on along the stale one.
      */
     private boolean pending(RobotState s) {
-        return commands.goToUnseen(s.id(), s.missionId())
+        return commands.goToUnseen(s.id(), s.missionId(), shownWithinNanos)
                 || System.nanoTime() - legSince.getOrDefault(s.id(), 0L) < pendingNanos;
     }
 

@@ -45,7 +45,7 @@ class TrafficControlTest {
     private final RobotCommands commands = new RobotCommands(ledger);
     private final List<String> walledIn = new ArrayList<>();
     private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
-            TimeUnit.SECONDS.toNanos(5), (robot, goal) -> walledIn.add(robot + " " + goal));
+            TimeUnit.SECONDS.toNanos(5), TimeUnit.MINUTES.toNanos(1), (robot, goal) -> walledIn.add(robot + " " + goal));
 
     /** The robot at (1,1) with its goal at (10,2) is sent on its first leg, which the edge accepts: its end. */
     private Cell firstLeg() {
@@ -108,6 +108,7 @@ class TrafficControlTest {
                 "##################################"));
         List<String> told = new ArrayList<>();
         TrafficControl control = new TrafficControl(new FleetView(wide), commands, 16, TimeUnit.SECONDS.toNanos(5),
+                TimeUnit.MINUTES.toNanos(1),
                 (robot, goal) -> told.add(robot + " " + goal));
         wide.carrying("cart1");
         wide.robot(16, 3, "stopped", 0, null, null);
@@ -142,7 +143,8 @@ class TrafficControlTest {
      */
     @Test
     void aLegIsNotSentAgainBeforeTheDeviceModelShowsItsMission() {
-        TrafficControl control = new TrafficControl(new FleetView(model), commands, 16, 0, (robot, goal) -> { });
+        TrafficControl control = new TrafficControl(new FleetView(model), commands, 16, 0,
+                TimeUnit.MINUTES.toNanos(1), (robot, goal) -> { });
         model.robot(1, 1, "stopped", 0, null, null);
         control.goal("robot1", new Cell(10, 2));
         control.step();
@@ -161,6 +163,18 @@ class TrafficControlTest {
         assertThat(bus.sent).as("mission 7 shown done at the leg's end: the next leg").hasSize(2);
         GoToCommand next = lastGoTo();
         assertThat(inLine(end, new Cell(next.x, next.y))).isTrue();
+    }
+
+    @Test
+    void aLegAcceptedButNeverShownIsTakenAsLostAndSentAgain() {
+        TrafficControl control = new TrafficControl(new FleetView(model), commands, 16, 0, 0, (robot, goal) -> { });
+        model.robot(1, 1, "stopped", 0, null, null);
+        control.goal("robot1", new Cell(10, 2));
+        control.step();
+        answer(lastGoTo(), 7L);
+        control.step();
+        assertThat(bus.sent).as("mission 7 not shown within the bound (none here): the leg again").hasSize(2)
+                .allMatch(c -> c instanceof GoToCommand);
     }
 
     @Test
