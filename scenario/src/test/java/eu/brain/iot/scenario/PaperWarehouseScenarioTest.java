@@ -87,11 +87,12 @@ class PaperWarehouseScenarioTest {
     void aBehaviourStoppedMidScenarioIsBroughtBackByTheBmsAndTheWarehouseCompletes(TestInfo test)
             throws Exception {
         Path run = runDir(test);
-        // at 20 s of warehouse time the robots are out on their errands (going for their carts or carrying them to
-        // storage, depending on the machine's load), so the restarted behaviour must take them over from the edge's
-        // device model: it starts with no errand of its own. The BMS brings the bundle back whether or not an event
-        // of its types comes meanwhile.
-        String text = runScenario(run, "--stop-behaviour", "robot@20s");
+        // at 25 s of warehouse time the robots are out on their errands (going for their carts, carrying them to
+        // storage or going home, depending on the machine's load: the errands begin once the BMS installed the robot
+        // and door behaviours, 0.5-2.5 s of wall time after the start, and the last robot docks at 35-50 s), so the
+        // restarted behaviour must take them over from the edge's device model: it starts with no errand of its own.
+        // The BMS brings the bundle back whether or not an event of its types comes meanwhile.
+        String text = runScenario(run, "--stop-behaviour", "robot@25s");
 
         assertThat(text).containsPattern("\\] fault: stopped eu\\.brain\\.iot\\.behaviours\\.robot .*was Active")
                 .contains("PASS  stopped behaviour eu.brain.iot.behaviours.robot brought back",
