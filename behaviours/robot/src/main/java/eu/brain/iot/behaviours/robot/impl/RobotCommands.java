@@ -28,12 +28,12 @@ final class RobotCommands {
     private final CommandLedger ledger;
     /** Per robot: the command sent and not answered yet (head), then those waiting for it. */
     private final Map<String, ArrayDeque<Waiting>> queues = new HashMap<>();
-    /** Per robot: the fleet's mission id of the last pick it accepted. */
-    private final Map<String, Long> lastPick = new HashMap<>();
+    /** Per robot: the last pick it accepted. */
+    private final Map<String, Accepted> lastPick = new HashMap<>();
     /** Per robot: the last go-to it accepted. */
     private final Map<String, Accepted> lastGoTo = new HashMap<>();
 
-    /** A go-to the robot accepted: the fleet's id of its mission, and when the answer came. */
+    /** A mission the robot accepted: the fleet's id of it, and when the answer came. */
     private record Accepted(long missionId, long atNanos) {
     }
 
@@ -63,11 +63,12 @@ final class RobotCommands {
         CommandLedger.Sent sent = ledger.answered(o);
         if (sent != null) {
             if (o.accepted && o.missionId != null) {
+                Accepted accepted = new Accepted(o.missionId, System.nanoTime());
                 synchronized (this) {
                     if (sent.command() instanceof PickCartCommand) {
-                        lastPick.put(sent.command().deviceId, o.missionId);
+                        lastPick.put(sent.command().deviceId, accepted);
                     } else if (sent.command() instanceof GoToCommand) {
-                        lastGoTo.put(sent.command().deviceId, new Accepted(o.missionId, System.nanoTime()));
+                        lastGoTo.put(sent.command().deviceId, accepted);
                     }
                 }
             }
@@ -83,12 +84,7 @@ final class RobotCommands {
      * @param shownMission the robot's mission as the device model shows it ({@code null}: none yet)
      */
     synchronized boolean pickUnseen(String robot, Long shownMission) {
-        ArrayDeque<Waiting> q = queues.get(robot);
-        if (q != null && q.stream().anyMatch(w -> w.command() instanceof PickCartCommand)) {
-            return true;
-        }
-        Long pick = lastPick.get(robot);
-        return pick != null && (shownMission == null || shownMission < pick);
+        return unseen(robot, PickCartCommand.class, lastPick, shownMission, Long.MAX_VALUE);
     }
 
     /**
@@ -101,13 +97,19 @@ final class RobotCommands {
      * @param lostNanos    how long after its acceptance a go-to may not show yet
      */
     synchronized boolean goToUnseen(String robot, Long shownMission, long lostNanos) {
+        return unseen(robot, GoToCommand.class, lastGoTo, shownMission, lostNanos);
+    }
+
+    /** Under this object's monitor: a command of the type queued or unanswered, or accepted and not shown yet. */
+    private boolean unseen(String robot, Class<? extends EdgeCommand> type, Map<String, Accepted> last,
+            Long shownMission, long lostNanos) {
         ArrayDeque<Waiting> q = queues.get(robot);
-        if (q != null && q.stream().anyMatch(w -> w.command() instanceof GoToCommand)) {
+        if (q != null && q.stream().anyMatch(w -> type.isInstance(w.command()))) {
             return true;
         }
-        Accepted go = lastGoTo.get(robot);
-        return go != null && (shownMission == null || shownMission < go.missionId())
-                && System.nanoTime() - go.atNanos() < lostNanos;
+        Accepted a = last.get(robot);
+        return a != null && (shownMission == null || shownMission < a.missionId())
+                && System.nanoTime() - a.atNanos() < lostNanos;
     }
 
     /** @return whether a command sent to the robot has no answer from the edge yet */

@@ -85,11 +85,11 @@ final class TrafficControl {
     }
 
     /**
-     * @param window       steps the planner looks ahead
-     * @param pendingNanos how long a go-to sent may not show in the edge's device model yet, at least
+     * @param window           steps the planner looks ahead
+     * @param pendingNanos     how long a go-to sent may not show in the edge's device model yet, at least
      * @param shownWithinNanos how long after the edge accepted it a go-to may not show in the model yet, at most
-     * @param walledIn     told a robot carrying a cart whose goal no path reaches around the carts any more, and
-     *                     that goal (on this class's thread)
+     * @param walledIn         told a robot carrying a cart whose goal no path reaches around the carts any more, and
+     *                         that goal (on this class's thread)
      */
     TrafficControl(FleetView view, RobotCommands commands, int window, long pendingNanos, long shownWithinNanos,
             BiConsumer<String, Cell> walledIn) {
@@ -271,8 +271,9 @@ final class TrafficControl {
     /**
      * Whether the robot's last leg may not show in the edge's device model yet: its go-to is not answered, or
      * answered as a mission newer than the one the model shows (for {@link #shownWithinNanos} at most), or it was sent
-     * so recently that the edge may not show it. A leg sent before the last one shows would be planned from a cell the robot has left and would queue behind
-     * the last one: a cancel would then end only the first, and the robot would drive on along the stale one.
+     * so recently that the edge may not show it. A leg sent before the last one shows would be planned from a cell the
+     * robot has left and would queue behind the last one: a cancel would then end only the first, and the robot would
+     * drive on along the stale one.
      */
     private boolean pending(RobotState s) {
         return commands.goToUnseen(s.id(), s.missionId(), shownWithinNanos)

@@ -45,7 +45,8 @@ class TrafficControlTest {
     private final RobotCommands commands = new RobotCommands(ledger);
     private final List<String> walledIn = new ArrayList<>();
     private final TrafficControl traffic = new TrafficControl(new FleetView(model), commands, 16,
-            TimeUnit.SECONDS.toNanos(5), TimeUnit.MINUTES.toNanos(1), (robot, goal) -> walledIn.add(robot + " " + goal));
+            TimeUnit.SECONDS.toNanos(5), TimeUnit.MINUTES.toNanos(1),
+            (robot, goal) -> walledIn.add(robot + " " + goal));
 
     /** The robot at (1,1) with its goal at (10,2) is sent on its first leg, which the edge accepts: its end. */
     private Cell firstLeg() {
