@@ -186,7 +186,7 @@ final class AsyncEventBus implements EventBus {
                 done == null ? null : new Completion(reserved.length, done, log), wait, reserved);
         boolean madeReady = false;
         for (ConsumerChannel target : reserved) {
-            madeReady |= target.enqueue(envelope);
+            madeReady |= target.enqueueFromPublisher(envelope);
         }
         if (madeReady) {
             pool.signal(); // once per event, not once per behaviour: workers pass the wake-up on

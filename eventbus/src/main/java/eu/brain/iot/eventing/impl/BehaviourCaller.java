@@ -20,8 +20,8 @@ import eu.brain.iot.eventing.spi.EventForwarder;
  * copy of each event (in its own bundle's class when it has one), calls {@code notify} and keeps the behaviour
  * alive when that throws.
  * <p>
- * Ownership: everything here belongs to the delivery worker that currently holds the behaviour's
- * {@link ConsumerChannel} (at most one at a time, see there); the hand-over between workers goes through the
+ * Ownership: everything here belongs to the thread that currently holds the behaviour's {@link ConsumerChannel}'s
+ * turn token (at most one at a time, see there): a delivery worker, or for a forwarder the publisher that took it; the hand-over between workers goes through the
  * channel's scheduling flag and the pool's run queue, which order the previous holder's writes before the next
  * holder's reads. Only {@link #delivered} and {@link #failures} are read by other threads (statistics), which
  * is why they are atomics written with ordered writes.
@@ -70,15 +70,48 @@ final class BehaviourCaller {
         } catch (OutOfMemoryError e) {
             throw e;
         } catch (Throwable t) {
-            failures.lazySet(failures.get() + 1);
-            envelope.counters.failed.increment();
-            if (failureLogged.add(envelope.type())) {
-                log.error("Smart behaviour {} (bundle {}) failed on an event of type {}; it keeps receiving "
-                        + "events, and further failures on this type are counted in the bus statistics "
-                        + "(Gogo: bus:stats) rather than logged.", spec.name(), spec.bundle(), envelope.type(), t);
-            }
+            failed(envelope, t);
         } finally {
             envelope.consumed();
+        }
+    }
+
+    /**
+     * For a forwarder, on the thread of the publisher that holds its turn token: hand one event over if the
+     * forwarder takes it without waiting ({@link EventForwarder#forwardNow}). A failure counts as in {@link #call}.
+     *
+     * @return {@code true} when the event was taken or failed (it is consumed); {@code false} when the forwarder
+     *         did not take it (nothing happened: it is for {@link #call} on a delivery worker)
+     */
+    boolean forwardNow(Envelope envelope) {
+        try {
+            if (behaviour == null) {
+                behaviour = spec.target().get();
+                if (behaviour == null) {
+                    return false; // call() says so on a delivery worker
+                }
+            }
+            if (!((EventForwarder) behaviour).forwardNow(envelope.type(), typeNames(envelope), toMap(envelope))) {
+                return false;
+            }
+            delivered.lazySet(delivered.get() + 1);
+            envelope.counters.delivered.increment();
+        } catch (OutOfMemoryError e) {
+            throw e;
+        } catch (Throwable t) {
+            failed(envelope, t);
+        }
+        envelope.consumed();
+        return true;
+    }
+
+    private void failed(Envelope envelope, Throwable t) {
+        failures.lazySet(failures.get() + 1);
+        envelope.counters.failed.increment();
+        if (failureLogged.add(envelope.type())) {
+            log.error("Smart behaviour {} (bundle {}) failed on an event of type {}; it keeps receiving "
+                    + "events, and further failures on this type are counted in the bus statistics "
+                    + "(Gogo: bus:stats) rather than logged.", spec.name(), spec.bundle(), envelope.type(), t);
         }
     }
 

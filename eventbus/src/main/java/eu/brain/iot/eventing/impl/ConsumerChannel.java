@@ -159,6 +159,19 @@ final class ConsumerChannel {
      *         {@link DeliveryPool#signal()}, once per event however many behaviours it reached
      */
     boolean enqueue(Envelope envelope) {
+        return enqueue(envelope, false);
+    }
+
+    /**
+     * As {@link #enqueue}, by a publisher on its own thread outside the bus's locks: when this is a forwarder and
+     * the publisher takes its turn token, the forwarder is offered the queued events right here
+     * ({@link #publisherTurn}), sparing them a delivery worker's wake-up on their way to another node.
+     */
+    boolean enqueueFromPublisher(Envelope envelope) {
+        return enqueue(envelope, orphans != null);
+    }
+
+    private boolean enqueue(Envelope envelope, boolean forwardHere) {
         if (orphans != null) {
             boolean queued;
             synchronized (forwarderLock) {
@@ -175,13 +188,53 @@ final class ConsumerChannel {
         }
         boolean madeReady = !scheduled && SCHEDULED.compareAndSet(this, false, true);
         if (madeReady) {
-            pool.ready(this);
+            if (forwardHere) {
+                madeReady = publisherTurn();
+            } else {
+                pool.ready(this);
+            }
         }
         if (closed) {
             // The behaviour left while we were queueing: its last turn may be over already, so count it now.
             discardPending();
         }
         return madeReady;
+    }
+
+    /**
+     * A forwarder's turn on the thread of the publisher that took its token: up to {@link #BATCH} queued events,
+     * each taken off the queue only once the forwarder took it without waiting
+     * ({@link BehaviourCaller#forwardNow}), under the lock {@link #closeAndTakeQueued} takes, so that an event is
+     * either forwarded or left to be published again, never both. What it refuses, and a closed forwarder's end,
+     * go to a delivery worker as any turn does.
+     *
+     * @return whether the channel went to the run queue (the publisher then signals the pool)
+     */
+    private boolean publisherTurn() {
+        for (int i = 0; i < BATCH; i++) {
+            synchronized (forwarderLock) {
+                Envelope envelope = closed ? null : queue.peek();
+                if (envelope == null || !caller.forwardNow(envelope)) {
+                    break;
+                }
+                queue.poll();
+            }
+            taken.lazySet(taken.get() + 1);
+            if (stall.isStalled()) {
+                stall.resumed();
+            }
+        }
+        if (closed || !queue.isEmpty()) {
+            pool.ready(this);
+            return true;
+        }
+        scheduled = false;
+        // as in settle(): a publisher or close() that found the token taken just before it was given back
+        if ((closed || !queue.isEmpty()) && SCHEDULED.compareAndSet(this, false, true)) {
+            pool.ready(this);
+            return true;
+        }
+        return false;
     }
 
     boolean isClosed() {

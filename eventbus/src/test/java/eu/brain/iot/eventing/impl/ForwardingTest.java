@@ -98,6 +98,91 @@ class ForwardingTest {
         assertThat(nodeC.got).containsExactly(Moved.class.getName() + ":r2");
     }
 
+    /** Takes events on the publisher's thread while {@code room} lasts; the rest on a delivery worker. */
+    static final class TakesWhileRoom implements EventForwarder {
+        final AtomicInteger room;
+        final List<String> got = new CopyOnWriteArrayList<>();
+        final List<Thread> threads = new CopyOnWriteArrayList<>();
+        final List<Boolean> now = new CopyOnWriteArrayList<>();
+
+        TakesWhileRoom(int room) {
+            this.room = new AtomicInteger(room);
+        }
+
+        @Override
+        public void forward(String eventType, List<String> typeNames, Map<String, Object> properties) {
+            record(properties, false);
+        }
+
+        @Override
+        public boolean forwardNow(String eventType, List<String> typeNames, Map<String, Object> properties) {
+            if (room.getAndDecrement() <= 0) {
+                return false;
+            }
+            record(properties, true);
+            return true;
+        }
+
+        private void record(Map<String, Object> properties, boolean onPublisher) {
+            got.add((String) properties.get("robotId"));
+            threads.add(Thread.currentThread());
+            now.add(onPublisher);
+        }
+    }
+
+    @Test
+    void anIdleForwarderTakesTheEventOnThePublishersThread() {
+        TakesWhileRoom nodeB = new TakesWhileRoom(Integer.MAX_VALUE);
+        bus.addForwarder(nodeB, "B", null, Moved.class.getName());
+
+        bus.deliver(new Moved("r1"));
+        assertThat(bus.tryDeliver(new Moved("r2"))).isTrue();
+
+        assertThat(nodeB.got).as("taken before deliver and tryDeliver returned").containsExactly("r1", "r2");
+        assertThat(nodeB.threads).containsOnly(Thread.currentThread());
+        assertThat(bus.statistics(Moved.class.getName()).delivered).isEqualTo(2);
+    }
+
+    @Test
+    void whatAForwarderRefusesOnThePublishersThreadReachesItOnADeliveryWorkerInOrder() {
+        TakesWhileRoom nodeB = new TakesWhileRoom(3);
+        bus.addForwarder(nodeB, "B", null, Moved.class.getName());
+
+        for (int i = 1; i <= 8; i++) {
+            bus.deliver(new Moved("r" + i));
+        }
+
+        await().atMost(DEADLINE).until(() -> nodeB.got.size() == 8);
+        assertThat(nodeB.got).containsExactly("r1", "r2", "r3", "r4", "r5", "r6", "r7", "r8");
+        assertThat(nodeB.now.subList(0, 3)).containsOnly(true);
+        assertThat(nodeB.threads.subList(0, 3)).containsOnly(Thread.currentThread());
+        assertThat(nodeB.now.subList(3, 8)).as("refused: each once, then taken by forward()").containsOnly(false);
+        assertThat(nodeB.threads.subList(3, 8)).doesNotContain(Thread.currentThread());
+    }
+
+    @Test
+    void aForwarderThatFailsOnThePublishersThreadIsCountedAndTheEventIsNotForwardedAgain() {
+        AtomicInteger calls = new AtomicInteger();
+        bus.addForwarder(new EventForwarder() {
+            @Override
+            public void forward(String eventType, List<String> typeNames, Map<String, Object> properties) {
+                calls.incrementAndGet();
+            }
+
+            @Override
+            public boolean forwardNow(String eventType, List<String> typeNames, Map<String, Object> properties) {
+                calls.incrementAndGet();
+                throw new IllegalStateException("the fabric connection is closed");
+            }
+        }, "B", null, Moved.class.getName());
+
+        bus.deliver(new Moved("r1"));
+
+        assertThat(calls.get()).isEqualTo(1);
+        assertThat(bus.statistics(Moved.class.getName()).failed).isEqualTo(1);
+        assertThat(log.count("error", "failed on an event of type")).isEqualTo(1);
+    }
+
     @Test
     void remoteEventsReachLocalBehavioursOnlyAndCompleteAfterNotify() throws Exception {
         Recorder forwarder = new Recorder();

@@ -14,6 +14,7 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 
+import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.federation.impl.Wire.MalformedException;
 
 /**
@@ -29,7 +30,8 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * here;</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals, takes
  * batches from them and publishes them;</li>
- * <li>the bus's delivery workers call the forwarders, which append to the outboxes (see there).</li>
+ * <li>publishers (on their own threads, when the outbox has room) and the bus's delivery workers call the
+ * forwarders, which append to the outboxes (see there).</li>
  * </ul>
  */
 public final class FabricNode implements AutoCloseable {
@@ -97,7 +99,7 @@ public final class FabricNode implements AutoCloseable {
                     }
                 });
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
-                this::node, this::outbox, to -> (type, names, data) -> forward(to, type, names, data));
+                this::node, this::outbox, ToNode::new);
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
         this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
@@ -321,16 +323,39 @@ public final class FabricNode implements AutoCloseable {
 
     // ---- sending ----------------------------------------------------------------------------------------------
 
-    /** A forwarder's event (on a delivery worker of the bus): kept for its destination, sent by the sender. */
-    private void forward(String destination, String type, List<String> names, Map<String, Object> data) {
-        try {
-            outbox(destination).append(seq -> wire.event(seq, type, names, data));
-        } catch (InterruptedException e) {
-            Thread.currentThread().interrupt();
-            throw new IllegalStateException("the forwarder to " + destination + " was stopped while it waited for "
-                    + "room", e);
+    /**
+     * The forwarders to one node: each event kept in the node's outbox and sent by the sender. On the publisher's
+     * thread when the outbox has room (and exists: opening its journal is for a delivery worker), else on a
+     * delivery worker of the bus, waiting for room.
+     */
+    private final class ToNode implements EventForwarder {
+        private final String destination;
+
+        ToNode(String destination) {
+            this.destination = destination;
         }
-        sender.wake();
+
+        @Override
+        public void forward(String type, List<String> names, Map<String, Object> data) {
+            try {
+                outbox(destination).append(seq -> wire.event(seq, type, names, data));
+            } catch (InterruptedException e) {
+                Thread.currentThread().interrupt();
+                throw new IllegalStateException("the forwarder to " + destination + " was stopped while it waited "
+                        + "for room", e);
+            }
+            sender.wake();
+        }
+
+        @Override
+        public boolean forwardNow(String type, List<String> names, Map<String, Object> data) {
+            Outbox outbox = outboxes.get(destination);
+            if (outbox == null || !outbox.tryAppend(seq -> wire.event(seq, type, names, data))) {
+                return false;
+            }
+            sender.wake();
+            return true;
+        }
     }
 
     // ---- views ------------------------------------------------------------------------------------------------

@@ -19,7 +19,8 @@ import eu.brain.iot.federation.impl.Journal.Pending;
  * timeout). An acknowledgement covers every event up to a sequence number. An event is in the journal, handed to the
  * operating system, before it is taken for a message ({@link #writeJournal}, {@link #journaledThrough}).
  * <p>
- * Threads: the bus's delivery workers append (forwarders of this destination; several may run at once), the sender
+ * Threads: publishers and the bus's delivery workers append (forwarders of this destination; several may run at
+ * once; a publisher only while there is room, {@link #tryAppend}), the sender
  * thread writes the journal and takes batches, the inbound thread applies acknowledgements; the queues are under this
  * object's monitor, which no file write holds (a write that stalls in the operating system would stall every
  * publisher to this node), and the journal under {@link #journalLock}, held by the sender thread and by
@@ -79,12 +80,34 @@ final class Outbox implements AutoCloseable {
      * @throws InterruptedException when the waiting appender is interrupted (its forwarder is going away)
      */
     synchronized void append(java.util.function.LongFunction<byte[]> encoder) throws InterruptedException {
-        while (!closed && unsent.size() + unacked.size() >= maxPending) {
+        while (!closed && full()) {
             wait();
         }
         if (closed) {
             throw new IllegalStateException("the fabric connection to " + destination + " is closed");
         }
+        keep(encoder);
+    }
+
+    /**
+     * Keep one event for the destination if there is room now, never waiting (a publisher's own thread).
+     *
+     * @param encoder makes the event's JSON for its sequence number
+     * @return whether it was kept; {@code false} when the outbox is full or closed (nothing kept)
+     */
+    synchronized boolean tryAppend(java.util.function.LongFunction<byte[]> encoder) {
+        if (closed || full()) {
+            return false;
+        }
+        keep(encoder);
+        return true;
+    }
+
+    private boolean full() {
+        return unsent.size() + unacked.size() >= maxPending;
+    }
+
+    private void keep(java.util.function.LongFunction<byte[]> encoder) {
         long seq = lastSeq + 1;
         Pending p = new Pending(seq, encoder.apply(seq));
         lastSeq = seq;

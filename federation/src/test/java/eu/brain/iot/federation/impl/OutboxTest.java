@@ -37,6 +37,26 @@ class OutboxTest {
     }
 
     @Test
+    void aPublisherAppendsWithoutWaitingOnlyWhileThereIsRoom() throws Exception {
+        Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 2, new NodeStats());
+        try (outbox) {
+            assertThat(outbox.tryAppend(OutboxTest::json)).isTrue();
+            assertThat(outbox.tryAppend(OutboxTest::json)).isTrue();
+            assertThat(outbox.tryAppend(OutboxTest::json)).as("full: refused, nothing kept").isFalse();
+
+            outbox.writeJournal();
+            List<Pending> sent = outbox.take(10);
+            assertThat(sent).extracting(Pending::seq).containsExactly(1L, 2L);
+            assertThat(outbox.tryAppend(OutboxTest::json)).as("sent, not acknowledged: still full").isFalse();
+            outbox.acked(outbox.epoch(), 1);
+            assertThat(outbox.tryAppend(OutboxTest::json)).as("room again once one is acknowledged").isTrue();
+            outbox.writeJournal();
+            assertThat(outbox.take(10)).extracting(Pending::seq).containsExactly(3L);
+        }
+        assertThat(outbox.tryAppend(OutboxTest::json)).as("closed").isFalse();
+    }
+
+    @Test
     void aRestartedPublisherFindsWhatWasNotAcknowledgedSentOrNot() throws Exception {
         String epoch;
         try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
@@ -86,8 +106,12 @@ class OutboxTest {
 
     private static void append(Outbox outbox, int events) throws InterruptedException {
         for (int i = 0; i < events; i++) {
-            outbox.append(seq -> ("{\"n\":" + seq + "}").getBytes(StandardCharsets.UTF_8));
+            outbox.append(OutboxTest::json);
         }
+    }
+
+    private static byte[] json(long seq) {
+        return ("{\"n\":" + seq + "}").getBytes(StandardCharsets.UTF_8);
     }
 
     private List<String> journalLines() throws Exception {
