@@ -118,7 +118,7 @@ public final class FleetView {
                 area == null ? 0 : area, "running".equals(text(p, "state", "state")), detect == null ? 0 : detect,
                 text(p, "cart", "cart"), id instanceof Number n ? n.longValue() : null, text(p, "mission", "type"),
                 text(p, "mission", "state"), gx == null || gy == null ? null : new Cell(gx, gy),
-                p.status() != ResourceStatus.UNREACHABLE));
+                p.status() != ResourceStatus.UNREACHABLE && p.status() != ResourceStatus.STALE));
     }
 
     private static Object value(ProviderSnapshot p, String service, String resource) {

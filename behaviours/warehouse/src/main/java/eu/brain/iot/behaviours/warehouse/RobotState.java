@@ -14,7 +14,10 @@ package eu.brain.iot.behaviours.warehouse;
  * @param missionType  {@code goto}, {@code pick} or {@code place} (of that mission)
  * @param missionState {@code queued}, {@code running}, {@code finished} or {@code failed}
  * @param goal         the goal of that mission when it is a {@code goto}, else {@code null}
- * @param reachable    whether the edge's last poll of it answered (its status is not {@code UNREACHABLE})
+ * @param reachable    whether what the model shows of it is current: the last poll of it answered (its status is not
+ *                     {@code UNREACHABLE}) and, for a robot another node of the fabric polls, that node reported it
+ *                     lately (not {@code STALE}: a node that died leaves its robots' last values behind, which a
+ *                     robot behaviour taking them over must not act on)
  */
 public record RobotState(String id, Cell cell, String heading, int area, boolean running, int detect, String cart,
         Long missionId, String missionType, String missionState, Cell goal, boolean reachable) {

@@ -61,6 +61,20 @@ class TrafficControlTest {
     }
 
     @Test
+    void aRobotWhoseNodeStoppedReportingItGetsNoLegUntilReportedAgain() {
+        model.status = ResourceStatus.STALE; // the node that polls it died: its last values linger in the model
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.goal("robot1", new Cell(10, 2));
+        traffic.step();
+        assertThat(bus.sent).as("nothing sent from values no poll confirms").isEmpty();
+
+        model.status = ResourceStatus.OK; // polled again, by the node that took it over
+        model.robot(1, 1, "stopped", 0, null, null);
+        traffic.step();
+        assertThat(bus.sent).hasSize(1);
+    }
+
+    @Test
     void aRobotGetsItsNextLegOnlyOnceSeenStandingAtTheEndOfTheOneBefore() {
         Cell end = firstLeg();
         Cell before = end.distance(new Cell(1, 1)) == 1 ? new Cell(1, 1) : step(end, new Cell(1, 1));
@@ -248,6 +262,8 @@ class TrafficControlTest {
 
         /** The id of the mission the robot shows. */
         long missionId = 1;
+        /** The robot's status in the model: {@code STALE} when another node polls it and stopped reporting it. */
+        ResourceStatus status = ResourceStatus.OK;
 
         void robot(int x, int y, String state, int detect, String missionState, Cell goal) {
             Map<String, Map<String, ResourceValue>> services = new LinkedHashMap<>();
@@ -263,8 +279,7 @@ class TrafficControlTest {
             if (cart != null) {
                 services.put("cart", Map.of("cart", value("cart", "cart", cart)));
             }
-            robot = new ProviderSnapshot("robot1", "robot", ResourceStatus.OK, Instant.now(), null, services,
-                    Map.of());
+            robot = new ProviderSnapshot("robot1", "robot", status, Instant.now(), null, services, Map.of());
         }
 
         private static ResourceValue value(String service, String resource, Object v) {
