@@ -96,9 +96,10 @@ final class NodeSetup {
     }
 
     /**
-     * The edge's settings (PID eu.brain.iot.edge): this run's fleet, polled every 0.5 s of warehouse time; one node of
-     * N owns the K-th share of the robots ({@code share=K/N}; the doors on node {@value #DOORS_OWNER}), held by a
-     * lease so that the others take its devices when it dies ({@code share.leased=true}).
+     * The edge's settings (PID eu.brain.iot.edge): this run's fleet, polled twice per step (0.5 s of warehouse
+     * time, {@link Options#POLLS_PER_STEP}); one node of N owns the K-th share of the robots ({@code share=K/N}; the
+     * doors on node {@value #DOORS_OWNER}), held by a lease so that the others take its devices when it dies
+     * ({@code share.leased=true}).
      */
     static Map<String, Object> edge(Options o, URI fleet, NodeSpec node) {
         Map<String, Object> edge = new TreeMap<>();

@@ -86,7 +86,7 @@ class NodeSetupFabricTest {
             Map<String, String> edge = cfg(config.resolve("eu.brain.iot.edge.cfg"));
             assertThat(edge).containsEntry("share", node.number() + "/3").containsEntry("share.leased", "true")
                     .containsEntry("doors.owner", "1").containsEntry("fleet.url", FLEET.toString())
-                    .containsEntry("poll.period.ms", "100");
+                    .containsEntry("poll.period.ms", "50");
 
             assertThat(cfg(config.resolve("eu.brain.iot.federation.cfg")))
                     .containsEntry("broker.uri", "tcp://127.0.0.1:18831")

@@ -21,7 +21,7 @@ class OptionsParserTest {
         assertThat(o.map()).isNull();
         assertThat(o.generate()).isNull();
         assertThat(o.speed()).isEqualTo(5);
-        assertThat(o.pollPeriodMs()).as("0.5 s of warehouse time").isEqualTo(100);
+        assertThat(o.pollPeriodMs()).as("twice per step of 0.5 s of warehouse time").isEqualTo(50);
         assertThat(o.waitLimitMs()).isEqualTo(10_000);
         assertThat(o.waitLimitSteps()).as("robot-sim's --deadlock-steps").isEqualTo(20);
         assertThat(o.deadlineMs()).isEqualTo(30 * 60_000);
@@ -48,7 +48,7 @@ class OptionsParserTest {
         assertThat(o.generate()).isEqualTo(new Options.Generate(60, 30, 30, 60, 1));
         assertThat(o.deadlineMs()).as("3 warehouse minutes per cart").isEqualTo(180 * 60_000L);
         assertThat(o.waitLimitSteps()).isEqualTo(15);
-        assertThat(o.pollPeriodMs()).isEqualTo(125);
+        assertThat(o.pollPeriodMs()).isEqualTo(63);
         assertThat(o.seed()).isEqualTo(7);
     }
 

@@ -26,7 +26,7 @@ import org.junit.jupiter.api.TestInfo;
  * robot offline mid-errand, and a behaviour bundle stopped mid-scenario.
  *
  * <p>Speed 5 (not the command's 10): REQ-2's 10 s limit is then 2 s of wall time, which leaves room on a loaded CI
- * machine for the behaviours' reactions (a poll every 100 ms of wall time). Each run took 7-12 s of wall time after
+ * machine for the behaviours' reactions (a poll every 50 ms of wall time). Each run took 7-12 s of wall time after
  * the node's 2-5 s start, on 2 cores at load 1-7 (about 35 s for the class). The seed differs from the command's
  * default (1), which acceptance runs.
  *

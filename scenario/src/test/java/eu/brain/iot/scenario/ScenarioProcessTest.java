@@ -57,7 +57,7 @@ class ScenarioProcessTest {
         assertThat(report.path("faults")).hasSize(2);
         assertThat(Files.readString(run.resolve("node.log"))).contains("fabric node ready in ");
         assertThat(Files.readString(run.resolve("node-config/eu.brain.iot.edge.cfg")))
-                .contains("poll.period.ms=25", "fleet.url=http://127.0.0.1:");
+                .contains("poll.period.ms=13", "fleet.url=http://127.0.0.1:");
         assertThat(run.resolve("node-config/eu.brain.iot.bis.cfg")).as("no repository: no installer").doesNotExist();
 
         long nodePid = Long.parseLong(find(text, "node: pid (\\d+)"));
