@@ -25,7 +25,8 @@ import eu.brain.iot.behaviours.warehouse.Grid;
  * than they must.
  * <p>
  * Not thread-safe: owned by the robot fleet's thread, like the {@link Errands} table that holds it. It keeps, per map,
- * the steps from each doorway to every cell (the map's walls only: carts on the floor do not move a cart's door).
+ * the steps from each doorway to every cell (the map's walls only: carts on the floor do not move a cart's door),
+ * which {@link EndGame} reads too.
  */
 final class DoorShares {
 
@@ -69,7 +70,17 @@ final class DoorShares {
      */
     Cell doorOf(Cell cell, Grid map) {
         load(map);
-        return door(cell);
+        return doorways.size() < 2 ? null : door(cell);
+    }
+
+    /**
+     * @return the steps from the doorway nearest the cell by path (the only one, through one door) to every cell the
+     *         map's walls let it reach; empty when the map has no doorway or none reaches the cell
+     */
+    Map<Cell, Integer> stepsFromDoorOf(Cell cell, Grid map) {
+        load(map);
+        Cell door = door(cell);
+        return door == null ? Map.of() : fromDoorway.get(doorways.indexOf(door));
     }
 
     private Cell door(Cell cell) {
@@ -95,8 +106,6 @@ final class DoorShares {
         doorways = map.cells(Grid.DOORWAY);
         fromDoorway.clear();
         doorOf.clear();
-        if (doorways.size() > 1) {
-            doorways.forEach(d -> fromDoorway.add(map.distances(d, Set.of())));
-        }
+        doorways.forEach(d -> fromDoorway.add(map.distances(d, Set.of())));
     }
 }

@@ -1,5 +1,6 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.ArrayList;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -230,6 +231,21 @@ final class Errands {
      * @param fleet the robots of the fleet
      */
     Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid, int fleet) {
+        return claim(robot, at, carts, grid, fleet, List.of());
+    }
+
+    /**
+     * As {@link #claim(String, Cell, List, Grid, int)}, knowing where the fleet's robots are: at the end of the work a
+     * robot leaves a cart to another that will be done with it sooner ({@link EndGame}).
+     *
+     * @param robots every robot of the fleet now
+     */
+    Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid, List<RobotState> robots) {
+        return claim(robot, at, carts, grid, robots.size(), robots);
+    }
+
+    private Optional<Errand> claim(String robot, Cell at, List<CartState> carts, Grid grid, int fleet,
+            List<RobotState> robots) {
         if (!waveOpen(grid)) {
             return Optional.empty();
         }
@@ -243,6 +259,10 @@ final class Errands {
             candidates = doorShares.behindOpenDoors(candidates, out,
                     (int) Math.min(fleet, release.robotsOut(doors)), grid);
         }
+        Cell dock = docks.get(robot);
+        if (dock != null && dock.equals(at) && !robots.isEmpty()) {
+            candidates = EndGame.worthTaking(dock, candidates, others(robot, robots), doorShares, grid);
+        }
         Optional<CartState> chosen = CartChoice.choose(at, candidates, grid, order);
         if (chosen.isEmpty()) {
             return Optional.empty();
@@ -251,6 +271,25 @@ final class Errands {
         Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
         errands.put(robot, e);
         return Optional.of(e);
+    }
+
+    /** The fleet's other robots with a dock and a current state, and when each will be back at its dock. */
+    private List<EndGame.Other> others(String robot, List<RobotState> robots) {
+        List<EndGame.Other> others = new ArrayList<>(robots.size());
+        for (RobotState s : robots) {
+            Cell dock = docks.get(s.id());
+            if (s.id().equals(robot) || dock == null || !s.reachable()) {
+                continue;
+            }
+            Errand e = errands.get(s.id());
+            Cell via = e == null ? null : switch (e.leg()) {
+                case TO_CART -> e.cartCell();
+                case TO_STORAGE -> e.drop();
+                case NONE, TO_DOCK -> null;
+            };
+            others.add(new EndGame.Other(dock, EndGame.stepsUntilBack(s.cell(), via, dock)));
+        }
+        return others;
     }
 
     /** The robot lifted its cart: it is given a storage cell, or none when no free one can be reached. */

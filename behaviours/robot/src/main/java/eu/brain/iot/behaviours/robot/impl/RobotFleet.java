@@ -254,7 +254,7 @@ public final class RobotFleet {
             e = errands.of(robot);
         }
         if (e.leg() == Errands.Leg.NONE) {
-            e = errands.claim(robot, s.cell(), view.carts(), grid.get(), view.robots().size()).orElse(e);
+            e = errands.claim(robot, s.cell(), view.carts(), grid.get(), view.robots()).orElse(e);
             if (e.leg() == Errands.Leg.TO_CART) {
                 LOG.log(System.Logger.Level.INFO, "{0} goes for {1} at {2}", robot, e.cart(), e.cartCell());
             }
