@@ -8,6 +8,7 @@ import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
+import eu.brain.iot.behaviours.warehouse.CartBudget;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.CartState;
 import eu.brain.iot.behaviours.warehouse.Grid;
@@ -47,6 +48,12 @@ final class Errands {
     /** When a robot without an errand may claim a cart, and which. */
     private final CartRelease release;
     private final Map<String, Cell> docks = new HashMap<>();
+    /**
+     * Carts each robot was given (claimed, or carrying or going for one when taken over), counted against the robot
+     * model's {@link CartBudget}: a robot given as many is not counted on to take another ({@link EndGame}). A claim
+     * planned anew counts twice, which only makes the count err towards a robot having none left.
+     */
+    private final Map<String, Integer> given = new HashMap<>();
     /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
     private final Map<String, Cell> remembered = new HashMap<>();
     /** The robots this table has taken over ({@link #adopt}): each once. */
@@ -122,6 +129,7 @@ final class Errands {
                 drops.add(drop);
             }
             errands.put(robot, new Errand(robot, Leg.TO_STORAGE, s.cart(), null, drop, dock));
+            given.merge(robot, 1, Integer::sum);
             return true;
         }
         Cell target = !s.idle() && s.goal() != null ? s.goal() : s.cell();
@@ -129,6 +137,7 @@ final class Errands {
                 .filter(c -> c.cell().equals(target) && waiting(c, grid) && !claimed(c.id())).findFirst();
         if (cart.isPresent()) {
             errands.put(robot, new Errand(robot, Leg.TO_CART, cart.get().id(), target, null, dock));
+            given.merge(robot, 1, Integer::sum);
         } else if (grid.area(s.cell()) != Grid.DOCKING && dock != null) {
             errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, dock));
         }
@@ -270,15 +279,20 @@ final class Errands {
         CartState best = chosen.get();
         Errand e = new Errand(robot, Leg.TO_CART, best.id(), best.cell(), null, docks.get(robot));
         errands.put(robot, e);
+        given.merge(robot, 1, Integer::sum);
         return Optional.of(e);
     }
 
-    /** The fleet's other robots with a dock and a current state, and when each will be back at its dock. */
+    /**
+     * The fleet's other robots that may take another cart (a dock, a current state, carts left in their budget), and
+     * when each will be back at its dock.
+     */
     private List<EndGame.Other> others(String robot, List<RobotState> robots) {
         List<EndGame.Other> others = new ArrayList<>(robots.size());
         for (RobotState s : robots) {
             Cell dock = docks.get(s.id());
-            if (s.id().equals(robot) || dock == null || !s.reachable()) {
+            if (s.id().equals(robot) || dock == null || !s.reachable()
+                    || given.getOrDefault(s.id(), 0) >= CartBudget.PER_ROBOT) {
                 continue;
             }
             Errand e = errands.get(s.id());

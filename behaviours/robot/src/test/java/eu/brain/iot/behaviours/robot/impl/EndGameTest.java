@@ -6,6 +6,7 @@ import java.util.List;
 
 import org.junit.jupiter.api.Test;
 
+import eu.brain.iot.behaviours.warehouse.CartBudget;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.CartState;
 import eu.brain.iot.behaviours.warehouse.Grid;
@@ -68,6 +69,22 @@ class EndGameTest {
         assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots)).isEmpty();
         assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots))
                 .hasValueSatisfying(e -> assertThat(e.cart()).isEqualTo("right"));
+    }
+
+    @Test
+    void noCartIsLeftToARobotThatLiftedAsManyAsTheModelLetsIt() {
+        Errands errands = new Errands(CartRelease.continuous(CartRelease.ROBOTS_PER_DOOR));
+        errands.seen("robot1", LEFT_DOCK, true);
+        errands.seen("robot2", RIGHT_DOCK, true);
+        List<RobotState> robots = List.of(docked("robot1", LEFT_DOCK), docked("robot2", RIGHT_DOCK));
+        for (int i = 0; i < CartBudget.PER_ROBOT; i++) { // robot2's errands, each ended: back at its dock
+            CartState cart = new CartState("c" + i, new Cell(30 + i, 6), null);
+            assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(cart), WIDE, robots)).isPresent();
+            errands.docked("robot2");
+        }
+
+        assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots))
+                .as("robot2 stays docked for good: robot1 takes the cart").isPresent();
     }
 
     private static RobotState docked(String id, Cell dock) {
