@@ -71,9 +71,8 @@ record Options(Path root, Path map, Generate generate, long seed, double speed, 
     /**
      * Polls of every robot per step of robot-sim (the paper's 0.5 s of warehouse time): with two, a leg's end reaches
      * the robot behaviour half a step sooner on average, and the robot waits that much less for its next leg
-     * (120x40, 60 robots, seeds 11-18: 74-89% of the bound, median 84%, against 71-87%, median 78%, with one;
-     * BENCHMARKS.md, "With the traffic planner"). The robot behaviour's own look stays once per 0.5 s of warehouse
-     * time, and it reacts at once to what the edge reports.
+     * (BENCHMARKS.md, "With the traffic planner", has the figures of one and two). The robot behaviour's own look
+     * stays once per 0.5 s of warehouse time, and it reacts at once to what the edge reports.
      */
     static final int POLLS_PER_STEP = 2;
 

@@ -14,9 +14,9 @@ import eu.brain.iot.behaviours.warehouse.Grid;
  * <p>
  * While there are more unclaimed carts than other robots, every robot takes one: a robot left waiting is time lost.
  * Once there are as many or fewer, each cart left is the last errand of some robot, and the warehouse ends with the
- * latest of them: a robot whose dock is far from the door a cart lies behind would cross the warehouse twice for it
- * (120x40, seed 11: the last three carts, behind the door at x=100, claimed by robots docked at x=15, 23 and 43, their
- * errands the run's last 120 s), while a robot docked near that door, back a little later, is done with it sooner.
+ * latest of them: a robot whose dock is far from the door a cart lies behind would cross the warehouse twice for it,
+ * while a robot docked near that door, back a little later, is done with it sooner (BENCHMARKS.md, "With the traffic
+ * planner", has the figures).
  * So a robot leaves a cart to another robot whose estimated finish is earlier by more than {@link #MARGIN_STEPS}:
  * <ul>
  * <li>a robot's finish with a cart: the steps until it is back at its dock (0 for this robot) plus twice the steps
@@ -50,7 +50,7 @@ final class EndGame {
     /**
      * @param dock       the dock of the robot about to claim, where it stands
      * @param candidates the carts it may claim
-     * @param others     every other robot of the fleet with a dock
+     * @param others     every other robot of the fleet that may take another cart
      * @return the candidates it takes rather than leave to another robot: all of them while there are more
      *         candidates than other robots
      */
