@@ -16,8 +16,9 @@ import java.util.TreeSet;
  * <li>a node releases a device that belongs to another node, or that an alive node of a lower name also owns;</li>
  * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
  * device, or its expiry, comes first, so that no device is commanded by two nodes at once; a device its holder
- * released is taken only a lease period and a quarter after that release was heard, so that the holder's last
- * command and the taker's first are more than a lease period apart (a lease lapsing is that gap by itself);</li>
+ * released, or held when its lease lapsed, is taken only a lease period and a quarter after that release or that
+ * last lease was heard, so that the holder's last command and the taker's first are more than a lease period apart
+ * (a holder renews every quarter of a lease period and commands in between);</li>
  * <li>a node that has just started takes nothing for one lease period: it first hears who holds what (a node killed
  * and started again finds its share held by others); nor while a node alive was first heard less than a lease period
  * ago, as that node may have released a device just before (its release unheard here);</li>
@@ -119,8 +120,7 @@ final class LeaseTable {
                 Long released = releasedNanos.get(d);
                 boolean mayTake = (joinGraceOver || share.contains(d) || claimed.contains(d))
                         && (released == null || now - released >= releaseGapNanos());
-                if (mayTake && !owned.contains(d) && self.equals(owner(d, share, alive))
-                        && alive.stream().noneMatch(l -> l.owned().contains(d))) {
+                if (mayTake && !owned.contains(d) && self.equals(owner(d, share, alive)) && !heldLately(d, now)) {
                     take.add(d);
                 }
             }
@@ -129,7 +129,17 @@ final class LeaseTable {
     }
 
     /**
-     * How long after a release was heard its device may be taken: a lease period, and a quarter more for the time
+     * Whether a lease heard less than {@link #releaseGapNanos()} ago lists the device: an alive holder's, or a lapsed
+     * one's whose last command may still be within a lease period (it renews every quarter of one, and commands in
+     * between: taken at the lapse, its last command and the taker's first could be closer than a lease period).
+     */
+    private boolean heldLately(String device, long now) {
+        return heard.values().stream().anyMatch(l -> l.owned().contains(device)
+                && now - l.heardNanos() < releaseGapNanos());
+    }
+
+    /**
+     * How long after a release (or a holder's last lease) was heard its device may be taken: a lease period, and a quarter more for the time
      * the release took to arrive and the holder's last command to land (the judge's rule: two nodes command a robot
      * at least a lease period apart).
      */

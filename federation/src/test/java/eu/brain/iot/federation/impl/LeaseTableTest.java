@@ -37,10 +37,10 @@ class LeaseTableTest {
         // three nodes; node3 shares nothing of the fleet here, node2 dies
         LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
         LeaseTable at3 = new LeaseTable("node3", LEASE, 0, LEASE);
-        at1.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at1.heard(lease("node2", SHARE2, SHARE2, now - LEASE * 5 / 4)); // lapsed a quarter of a lease ago
         at1.heard(lease("node3", Set.of(), Set.of(), 0)); // heard all along
         at1.heard(lease("node3", Set.of(), Set.of(), now));
-        at3.heard(lease("node2", SHARE2, SHARE2, now - LEASE - 1));
+        at3.heard(lease("node2", SHARE2, SHARE2, now - LEASE * 5 / 4));
         at3.heard(lease("node1", SHARE1, SHARE1, 0));
         at3.heard(lease("node1", SHARE1, SHARE1, now));
         assertThat(at1.lapsed(now)).containsExactly("node2");
@@ -128,6 +128,18 @@ class LeaseTableTest {
         long now = 3 * LEASE + 1; // node1's lease lapsed, well within the grace
         assertThat(at2.lapsed(now)).containsExactly("node1");
         assertThat(at2.plan(now, FLEET, SHARE2, SHARE2).take()).containsExactlyInAnyOrderElementsOf(SHARE1);
+    }
+
+    @Test
+    void theDevicesOfALapsedHolderAreTakenALeasePeriodAndAQuarterAfterItsLastLease() {
+        LeaseTable at1 = new LeaseTable("node1", LEASE, 0, LEASE);
+        long last = 10 * LEASE; // node2's last lease; it may command until its next renewal, a quarter later
+        at1.heard(lease("node2", SHARE2, SHARE2, last));
+        assertThat(at1.lapsed(last + LEASE + 1)).containsExactly("node2");
+        assertThat(at1.plan(last + LEASE + 1, FLEET, SHARE1, SHARE1).take()).as("lapsed, but its last command may be"
+                + " less than a lease period ago").isEmpty();
+        assertThat(at1.plan(last + LEASE * 5 / 4, FLEET, SHARE1, SHARE1).take())
+                .containsExactlyInAnyOrderElementsOf(SHARE2);
     }
 
     @Test
