@@ -50,11 +50,8 @@ final class BehaviourCaller {
     /** Deliver one event; a failure is counted (and logged once per event type), never thrown. */
     void call(Envelope envelope) {
         try {
-            if (behaviour == null) {
-                behaviour = spec.target().get();
-                if (behaviour == null) {
-                    throw new IllegalStateException("the behaviour service is no longer available");
-                }
+            if (fetched() == null) {
+                throw new IllegalStateException("the behaviour service is no longer available");
             }
             if (spec.forwarder()) {
                 ((EventForwarder) behaviour).forward(envelope.type(), typeNames(envelope), toMap(envelope));
@@ -85,11 +82,8 @@ final class BehaviourCaller {
      */
     boolean forwardNow(Envelope envelope) {
         try {
-            if (behaviour == null) {
-                behaviour = spec.target().get();
-                if (behaviour == null) {
-                    return false; // call() says so on a delivery worker
-                }
+            if (fetched() == null) {
+                return false; // call() says so on a delivery worker
             }
             if (!((EventForwarder) behaviour).forwardNow(envelope.type(), typeNames(envelope), toMap(envelope))) {
                 return false;
@@ -103,6 +97,14 @@ final class BehaviourCaller {
         }
         envelope.consumed();
         return true;
+    }
+
+    /** The behaviour object, fetched at the first delivery; {@code null} when its service is gone. */
+    private Object fetched() {
+        if (behaviour == null) {
+            behaviour = spec.target().get();
+        }
+        return behaviour;
     }
 
     private void failed(Envelope envelope, Throwable t) {

@@ -29,6 +29,7 @@ class EndGameTest {
     private static final Cell RIGHT_DOCK = new Cell(35, 1);
     private static final CartState BEHIND_RIGHT = new CartState("right", new Cell(36, 5), null);
     private static final CartState BEHIND_LEFT = new CartState("left", new Cell(4, 5), null);
+    private static final List<RobotState> BOTH = List.of(docked("robot1", LEFT_DOCK), docked("robot2", RIGHT_DOCK));
 
     @Test
     void whileThereAreMoreCartsThanOtherRobotsEveryCartIsWorthTaking() {
@@ -61,30 +62,32 @@ class EndGameTest {
 
     @Test
     void theErrandTableGivesTheLastCartToTheRobotDockedNearItsDoor() {
-        Errands errands = new Errands(CartRelease.continuous(CartRelease.ROBOTS_PER_DOOR));
-        errands.seen("robot1", LEFT_DOCK, true);
-        errands.seen("robot2", RIGHT_DOCK, true);
-        List<RobotState> robots = List.of(docked("robot1", LEFT_DOCK), docked("robot2", RIGHT_DOCK));
+        Errands errands = robotsAtBothDoors();
 
-        assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots)).isEmpty();
-        assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots))
+        assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, BOTH)).isEmpty();
+        assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(BEHIND_RIGHT), WIDE, BOTH))
                 .hasValueSatisfying(e -> assertThat(e.cart()).isEqualTo("right"));
     }
 
     @Test
     void noCartIsLeftToARobotThatLiftedAsManyAsTheModelLetsIt() {
-        Errands errands = new Errands(CartRelease.continuous(CartRelease.ROBOTS_PER_DOOR));
-        errands.seen("robot1", LEFT_DOCK, true);
-        errands.seen("robot2", RIGHT_DOCK, true);
-        List<RobotState> robots = List.of(docked("robot1", LEFT_DOCK), docked("robot2", RIGHT_DOCK));
+        Errands errands = robotsAtBothDoors();
         for (int i = 0; i < CartBudget.PER_ROBOT; i++) { // robot2's errands, each ended: back at its dock
             CartState cart = new CartState("c" + i, new Cell(30 + i, 6), null);
-            assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(cart), WIDE, robots)).isPresent();
+            assertThat(errands.claim("robot2", RIGHT_DOCK, List.of(cart), WIDE, BOTH)).isPresent();
             errands.docked("robot2");
         }
 
-        assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, robots))
+        assertThat(errands.claim("robot1", LEFT_DOCK, List.of(BEHIND_RIGHT), WIDE, BOTH))
                 .as("robot2 stays docked for good: robot1 takes the cart").isPresent();
+    }
+
+    /** robot1 docked by the left door, robot2 by the right one, both idle ({@link #BOTH}). */
+    private static Errands robotsAtBothDoors() {
+        Errands errands = new Errands(CartRelease.continuous(CartRelease.ROBOTS_PER_DOOR));
+        errands.seen("robot1", LEFT_DOCK, true);
+        errands.seen("robot2", RIGHT_DOCK, true);
+        return errands;
     }
 
     private static RobotState docked(String id, Cell dock) {
