@@ -146,8 +146,10 @@ public final class Judge {
             nodes.add(h.to());
         });
         if (handovers.isEmpty()) {
-            return new Verdict.Check(name, true, last.size() + " robot(s), each commanded by one node only: "
-                    + String.join(", ", nodes));
+            return new Verdict.Check(name, true, nodes.size() == 1
+                    ? last.size() + " robot(s), all commanded by node " + nodes.first()
+                    : last.size() + " robot(s), each commanded by one node only (nodes " + String.join(", ", nodes)
+                            + ")");
         }
         long closest = handovers.stream().mapToLong(WorldSnapshot.Handover::gapWallMillis).min().orElse(0);
         return new Verdict.Check(name, true, last.size() + " robot(s) commanded by " + String.join(", ", nodes) + "; "

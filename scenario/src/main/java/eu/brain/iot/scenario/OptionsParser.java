@@ -149,7 +149,8 @@ final class OptionsParser {
         }
         if (e instanceof MissingParameterException m && !m.getMissing().isEmpty()
                 && m.getMissing().get(0) instanceof OptionSpec o) {
-            return o.longestName() + " needs a value";
+            return o.longestName() + " needs a value: " + o.paramLabel()
+                    + (o.description().length > 0 ? ", " + o.description()[0] : "");
         }
         if (e instanceof OverwrittenOptionException o && o.getOverwritten() instanceof OptionSpec option) {
             return option.longestName() + " given twice";

@@ -38,7 +38,7 @@ class HandoverJudgeTest {
             Verdict.Check c = check(Judge.judge(f.world(), 10_000, -1));
             assertThat(c.passed()).isTrue();
             assertThat(c.name()).contains("2.0 s of wall time");
-            assertThat(c.detail()).isEqualTo("2 robot(s), each commanded by one node only: node");
+            assertThat(c.detail()).isEqualTo("2 robot(s), all commanded by node node");
         }
     }
 
@@ -58,6 +58,17 @@ class HandoverJudgeTest {
                     .endsWith(" of wall time apart)").doesNotContain("robot1");
             assertThat(Judge.oneCommanderAtATime(f.world(), 0).passed()).as("no lease: any hand-over is fine")
                     .isTrue();
+        }
+    }
+
+    @Test
+    void robotsSplitOverNodesWithoutHandOverPassNamingTheNodes() throws Exception {
+        try (Fleet f = Fleet.paper()) {
+            assertThat(goTo(f, "robot1", "node1", 2, 4)).isEqualTo(200);
+            assertThat(goTo(f, "robot2", "node2", 4, 4)).isEqualTo(200);
+            Verdict.Check c = check(Judge.judge(f.world(), 10_000, -1));
+            assertThat(c.passed()).isTrue();
+            assertThat(c.detail()).isEqualTo("2 robot(s), each commanded by one node only (nodes node1, node2)");
         }
     }
 

@@ -55,7 +55,8 @@ class NodesOptionsTest {
             assertThatThrownBy(() -> OptionsParser.parse("--nodes", bad))
                     .hasMessage("--nodes must be a whole number 1..20, found '" + bad + "'");
         }
-        assertThatThrownBy(() -> OptionsParser.parse("--nodes")).hasMessage("--nodes needs a value");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes")).hasMessage("--nodes needs a value: N, a fabric of N nodes, node1..nodeN, each its own JVM owning its share"
+                + " of the fleet");
     }
 
     @Test

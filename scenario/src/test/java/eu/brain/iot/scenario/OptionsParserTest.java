@@ -78,7 +78,10 @@ class OptionsParserTest {
         assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "robot"))
                 .hasMessageStartingWith("--stop-behaviour 'robot': write BEHAVIOUR@TIME");
         assertThatThrownBy(() -> OptionsParser.parse("--seed", "1", "--seed", "2")).hasMessage("--seed given twice");
-        assertThatThrownBy(() -> OptionsParser.parse("--deadline")).hasMessage("--deadline needs a value");
+        assertThatThrownBy(() -> OptionsParser.parse("--generate", "--seed"))
+                .hasMessage("--seed needs a value: N, robot-sim's seed, and the generated map's (1)");
+        assertThatThrownBy(() -> OptionsParser.parse("--deadline")).hasMessage("--deadline needs a value: MINUTES, warehouse minutes before an unfinished run"
+                + " fails (30, or 3 per cart if more)");
         assertThatThrownBy(() -> OptionsParser.parse("--colour")).hasMessage("unknown option '--colour'");
         assertThatThrownBy(() -> OptionsParser.parse("fast")).hasMessageStartingWith("unexpected argument 'fast'");
         assertThatThrownBy(() -> OptionsParser.parse("--node-config", "pom.xml"))

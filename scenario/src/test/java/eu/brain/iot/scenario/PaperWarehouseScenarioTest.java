@@ -131,7 +131,7 @@ class PaperWarehouseScenarioTest {
             String text = runScenario(run, "--broker", "tcp://127.0.0.1:" + port);
             assertThat(text).contains("PASS  the node joined the fabric through tcp://127.0.0.1:" + port,
                     "PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
-                    "each commanded by one node only: node1");
+                    "all commanded by node node1");
             assertThat(run.resolve("fabric.key")).as("a key of the run's own").isRegularFile();
         } finally {
             broker.destroy();
