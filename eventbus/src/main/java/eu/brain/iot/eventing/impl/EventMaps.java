@@ -164,7 +164,7 @@ final class EventMaps {
      * Builds one data class from a map of field values; {@link #constructor} is null for a class outside the DTO
      * rules (no public no-argument constructor, abstract, or a key prefix), which the Converter builds as a whole.
      */
-    private static final class Writer {
+    static final class Writer {
         final MethodHandle constructor;
         final String[] names;
         final VarHandle[] handles;
@@ -256,6 +256,10 @@ final class EventMaps {
             if (type.isInstance(value) && EventCopier.isImmutable(value.getClass())) {
                 return value;
             }
+            Object widened = widened(value, type);
+            if (widened != null) {
+                return widened;
+            }
             Function<CharSequence, Object> parse = TEXT_PARSERS.get(type);
             if (parse != null && value instanceof CharSequence text) {
                 return parse.apply(text);
@@ -271,6 +275,36 @@ final class EventMaps {
             Object converted = CONVERTER.convert(value).to(genericTypes[i]);
             // the Converter hands a value for an Object field over as it is: the map is shared with other consumers
             return converted == value ? toValue(value) : converted;
+        }
+
+        /**
+         * A number for a field of a wider number type, as the Converter makes it ({@link Number}'s own conversions)
+         * but without its reflection: JSON gives a small {@code long} as an {@link Integer}, a whole {@code double}
+         * maybe too. Null for any other pair.
+         */
+        static Object widened(Object value, Class<?> type) {
+            boolean integral = value instanceof Integer || value instanceof Long || value instanceof Short
+                    || value instanceof Byte;
+            if (!integral && !(value instanceof Float)) {
+                return null;
+            }
+            Number n = (Number) value;
+            if (type == Double.class) {
+                return n.doubleValue();
+            }
+            if (!integral) {
+                return null;
+            }
+            if (type == Long.class) {
+                return n.longValue();
+            }
+            if (type == Float.class) {
+                return n.floatValue();
+            }
+            if (type == Integer.class && (value instanceof Short || value instanceof Byte)) {
+                return n.intValue();
+            }
+            return null;
         }
 
         private static Class<?> boxed(Class<?> type) {

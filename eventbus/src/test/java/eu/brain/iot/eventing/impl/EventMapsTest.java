@@ -141,6 +141,14 @@ class EventMapsTest {
         json.put("where", Map.of("x", 5L, "y", "6"));
         json.put("unknown", "ignored");
         inputs.add(json);
+        // numbers of narrower types, which take the widening path instead of the Converter
+        Map<String, Object> narrower = new LinkedHashMap<>();
+        narrower.put("count", (short) 3);
+        narrower.put("big", Integer.MAX_VALUE);
+        narrower.put("ratio", 0.75f);
+        narrower.put("small", 5L);
+        narrower.put("boxed", (byte) 9);
+        inputs.add(narrower);
         Map<String, Object> nulls = new LinkedHashMap<>();
         nulls.put("text", null);
         nulls.put("count", null);
@@ -154,6 +162,19 @@ class EventMapsTest {
                     .to(Scalars.class);
             assertThat(EventMaps.toMap(ours)).as("from %s", input).isEqualTo(EventMaps.toMap(theirs));
         }
+    }
+
+    @Test
+    void onlyANumberOfANarrowerTypeIsWidenedTheRestGoesToTheConverter() {
+        assertThat(EventMaps.Writer.widened(3, Long.class)).isEqualTo(3L);
+        assertThat(EventMaps.Writer.widened(3L, Double.class)).isEqualTo(3.0);
+        assertThat(EventMaps.Writer.widened(0.5f, Double.class)).isEqualTo(0.5);
+        assertThat(EventMaps.Writer.widened((short) 2, Integer.class)).isEqualTo(2);
+        assertThat(EventMaps.Writer.widened(3L, Integer.class)).as("narrowing").isNull();
+        assertThat(EventMaps.Writer.widened(2.5, Long.class)).as("a fraction").isNull();
+        assertThat(EventMaps.Writer.widened(0.5f, Long.class)).as("a fraction").isNull();
+        assertThat(EventMaps.Writer.widened(3, String.class)).as("not a number field").isNull();
+        assertThat(EventMaps.Writer.widened("3", Long.class)).as("text").isNull();
     }
 
     public static class Holder<T> extends BrainIoTEvent {
