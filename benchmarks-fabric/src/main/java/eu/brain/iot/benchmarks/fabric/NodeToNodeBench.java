@@ -26,6 +26,10 @@ final class NodeToNodeBench {
     private static final long START_TIMEOUT_S = 180;
     private static final long RUN_TIMEOUT_S = 300;
     private static final int KEY_BYTES = 32;
+    /** Seconds of each paced warm-up run after the first. */
+    static final int WARM_STEP_S = 5;
+    /** The compilers' share of one core under which the JVMs count as warm. */
+    static final double JIT_QUIET_SHARE = 0.03;
     /** The counter keeps its counts in memory: a file write inside {@code notify()} would be measured as latency. */
     private static final String COUNTS_IN_MEMORY = "file=\n";
 
@@ -82,8 +86,7 @@ final class NodeToNodeBench {
         double perSecond = settings.floodMessages() * 1e9 / (flood.get("lastNs") - flood.get("startNs"));
         System.err.printf("  %s: %,.0f events/s back to back%n", what, perSecond);
         int rate = settings.rate();
-        run("pacedwarm", (long) (rate * settings.latencyWarmupSeconds()), rate, publisher, publisherConfig, counter,
-                problems);
+        warmUntilTheJitIsQuiet(what, rate, publisher, publisherConfig, counter, problems);
         Map<String, Long> paced = run("paced", (long) (rate * settings.latencySeconds()), rate, publisher,
                 publisherConfig, counter, problems);
         LatencyStats latency = new LatencyStats(paced.get("n").intValue(), paced.get("p50Ns"), paced.get("p99Ns"),
@@ -91,6 +94,27 @@ final class NodeToNodeBench {
         System.err.printf("  %s at %,d/s: p50 %s ms, p99 %s ms%n", what, rate, LatencyStats.millis(latency.p50Nanos()),
                 LatencyStats.millis(latency.p99Nanos()));
         return new Row(what, perSecond, latency, problems.toString());
+    }
+
+    /**
+     * Paced runs not measured: the minimum warm-up, then more of {@link #WARM_STEP_S} each while the JIT compilers of
+     * the benchmark's JVMs used more than {@link #JIT_QUIET_SHARE} of one core during the last, up to the maximum.
+     */
+    private void warmUntilTheJitIsQuiet(String what, int rate, NodeProcess publisher, Path config,
+            NodeProcess counter, StringBuilder problems) throws Exception {
+        JitActivity jit = JitActivity.available() ? new JitActivity() : null;
+        run("pacedwarm", (long) (rate * settings.latencyWarmupSeconds()), rate, publisher, config, counter, problems);
+        double warmed = settings.latencyWarmupSeconds();
+        double share = jit == null ? 0 : jit.shareSinceLast();
+        for (int round = 2; share > JIT_QUIET_SHARE && warmed < settings.latencyWarmupMaxSeconds(); round++) {
+            run("pacedwarm" + round, rate * WARM_STEP_S, rate, publisher, config, counter, problems);
+            warmed += WARM_STEP_S;
+            share = jit.shareSinceLast();
+        }
+        System.err.printf("  %s: paced warm-up %.0f s, %s%n", what, warmed, jit == null
+                ? "no JIT activity to read here (Linux's /proc)"
+                : String.format("the JIT compilers at %.1f%% of one core in its last seconds%s", share * 100,
+                        share > JIT_QUIET_SHARE ? " (still busy at --latency-warmup-max)" : ""));
     }
 
     /** Starts one run and waits for the counter's latency line; the figures of that line and the start time. */

@@ -14,14 +14,17 @@ import java.util.List;
  * @param floodMessages        messages measured back to back
  * @param floodWarmup          messages sent first and not measured
  * @param rate                 the paced rate of the latency runs, messages (events) per second
- * @param latencyWarmupSeconds paced seconds not measured
+ * @param latencyWarmupSeconds paced seconds not measured, at least
+ * @param latencyWarmupMaxSeconds paced seconds not measured, at most: node to node warms up until the JIT compilers
+ *                             are quiet ({@link JitActivity})
  * @param latencySeconds       paced seconds measured
  * @param installs             remote installs measured (after a first one, not measured)
  * @param root                 the checkout (broker/target/broker.jar)
  * @param work                 scratch folder (brokers' state and logs)
  */
 record Settings(List<String> parts, List<String> brokers, String mosquittoUri, int floodMessages, int floodWarmup, int rate,
-        double latencyWarmupSeconds, double latencySeconds, int installs, Path root, Path work) {
+        double latencyWarmupSeconds, double latencyWarmupMaxSeconds, double latencySeconds, int installs, Path root,
+        Path work) {
 
     /** What {@code --parts} takes, in the order of the table. */
     static final List<String> PARTS = List.of("bare", "nodes", "install", "local");
@@ -42,7 +45,9 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
               --messages N          messages measured back to back (default 200000)
               --warmup N            messages sent before them, not measured (default 50000)
               --rate N              paced rate of the latency runs, per second (default 2000)
-              --latency-warmup S    paced seconds not measured (default 3)
+              --latency-warmup S    paced seconds not measured (default 3); node to node goes on warming up,
+                                    5 s at a time, while the JVMs' JIT compilers take over 3% of a core
+              --latency-warmup-max S  at most this many (default 120)
               --latency-seconds S   paced seconds measured (default 10)
               --installs N          remote installs measured, after a first one not measured (default 20)
               --root DIR            the checkout (default .)
@@ -57,6 +62,7 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
         int warmup = 50_000;
         int rate = 2000;
         double latencyWarmup = 3;
+        double latencyWarmupMax = 120;
         double latency = 10;
         int installs = 20;
         Path root = Path.of(".");
@@ -75,6 +81,7 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
                 case "--warmup" -> warmup = positive(flag, v);
                 case "--rate" -> rate = positive(flag, v);
                 case "--latency-warmup" -> latencyWarmup = positive(flag, v);
+                case "--latency-warmup-max" -> latencyWarmupMax = positive(flag, v);
                 case "--latency-seconds" -> latency = positive(flag, v);
                 case "--installs" -> installs = positive(flag, v);
                 case "--root" -> root = Path.of(v);
@@ -95,7 +102,8 @@ record Settings(List<String> parts, List<String> brokers, String mosquittoUri, i
             }
         }
         root = root.toAbsolutePath().normalize();
-        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup, latency, installs, root,
+        return new Settings(parts, brokers, mosquitto, messages, warmup, rate, latencyWarmup,
+                Math.max(latencyWarmup, latencyWarmupMax), latency, installs, root,
                 (work == null ? root.resolve("benchmarks-fabric/target/run") : work).toAbsolutePath());
     }
 
