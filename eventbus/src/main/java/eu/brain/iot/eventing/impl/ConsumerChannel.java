@@ -62,6 +62,8 @@ final class ConsumerChannel {
     private final Logger log;
     private final BehaviourCaller caller;
     private final StallPolicy stall;
+    /** When the consumer was registered (epoch ms): an event published before cannot have reached it. */
+    final long createdMillis = System.currentTimeMillis();
 
     private final ConcurrentLinkedQueue<Envelope> queue = new ConcurrentLinkedQueue<>();
     /**

@@ -63,6 +63,14 @@ final class RouteTable {
                 t -> compute(new LinkedHashSet<>(typeNames), counters.apply(t), null, true));
     }
 
+    /**
+     * The route of an event given up by a node that stayed offline: every consumer, forwarders included, of any of
+     * {@code typeNames}. Not cached: rare.
+     */
+    Route routeForGivenUp(String eventType, List<String> typeNames, Function<String, EventTypeCounters> counters) {
+        return compute(new LinkedHashSet<>(typeNames), counters.apply(eventType), null, false);
+    }
+
     private Route compute(Set<String> names, EventTypeCounters counters, Class<?> type, boolean remote) {
         List<ConsumerChannel> plain = new ArrayList<>();
         List<ConsumerChannel> filtered = new ArrayList<>();

@@ -42,4 +42,19 @@ public interface RemoteEvents {
      */
     boolean tryDeliverRemoteToBehaviours(String eventType, List<String> typeNames, Map<String, Object> eventData,
             Runnable done);
+
+    /**
+     * Publish again, as if published here now, an event this node published before for a node of the fabric that
+     * never took it (it stayed offline and the fabric gave it up), but only to the consumers that cannot have taken it
+     * then: those registered after {@code publishedMillis}, local behaviours and forwarders to other nodes alike (a
+     * behaviour installed since, a node whose interest came since). When nothing consumes it at all, it follows the
+     * rules for unhandled events (the policy's hold: the BMS installs a behaviour for it). Routed by {@code typeNames}
+     * as an event from another node is. Never waits. Since 1.5.
+     *
+     * @param publishedMillis when it was first published (epoch milliseconds)
+     * @return {@code false} when a queue (or the hold) was full: nothing was queued, offer it again later; {@code true}
+     *         otherwise, also when every consumer it has was there before (nothing to do)
+     */
+    boolean tryDeliverGivenUp(String eventType, List<String> typeNames, Map<String, Object> eventData,
+            long publishedMillis);
 }

@@ -15,7 +15,7 @@
  * {@link eu.brain.iot.eventing.spi.RemoteEvents} delivers events from other nodes to the local behaviours only.
  */
 @Export
-@Version("1.4.0")
+@Version("1.5.0")
 package eu.brain.iot.eventing.spi;
 
 import org.osgi.annotation.bundle.Export;

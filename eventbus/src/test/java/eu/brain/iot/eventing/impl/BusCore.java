@@ -93,6 +93,12 @@ public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
     }
 
     @Override
+    public boolean tryDeliverGivenUp(String eventType, List<String> typeNames, Map<String, Object> eventData,
+            long publishedMillis) {
+        return bus.publishGivenUp(eventType, typeNames, eventData, publishedMillis);
+    }
+
+    @Override
     public boolean tryDeliverRemoteToBehaviours(String eventType, List<String> typeNames,
             Map<String, Object> eventData, Runnable done) {
         return bus.publishRemote(eventType, typeNames, eventData, done, true);

@@ -378,4 +378,52 @@ class ForwardingTest {
         assertThat(done.get()).isZero();
         assertThat(bus.statistics("x.Unknown").unhandled).isZero();
     }
+
+    /** An untyped local behaviour that records the robot of every event it takes. */
+    static final class Local implements UntypedSmartBehaviour {
+        final List<String> got = new CopyOnWriteArrayList<>();
+
+        @Override
+        public void notify(String eventType, Map<String, ?> properties) {
+            got.add((String) properties.get("robotId"));
+        }
+    }
+
+    @Test
+    void anEventGivenUpReachesOnlyTheConsumersRegisteredSinceItWasPublished() {
+        Recorder oldNode = new Recorder();
+        Local oldLocal = new Local();
+        bus.addForwarder(oldNode, "B", null, Moved.class.getName());
+        bus.addUntypedBehaviour(oldLocal, null, Moved.class.getName());
+        long published = System.currentTimeMillis();
+        await("the clock moves on").atMost(DEADLINE).until(() -> System.currentTimeMillis() > published);
+        Recorder newNode = new Recorder();
+        Local newLocal = new Local();
+        bus.addForwarder(newNode, "C", null, Moved.class.getName());
+        bus.addUntypedBehaviour(newLocal, "(robotId=r1)", Moved.class.getName());
+
+        List<String> names = List.of(Docked.class.getName(), Moved.class.getName());
+        assertThat(bus.tryDeliverGivenUp(Docked.class.getName(), names, Map.of("robotId", "r1"), published)).isTrue();
+
+        await().atMost(DEADLINE).until(() -> newNode.got.size() == 1 && newLocal.got.size() == 1);
+        assertThat(newNode.got).containsExactly(Docked.class.getName() + ":r1");
+        assertThat(newLocal.got).containsExactly("r1");
+        assertThat(oldNode.got).as("had it when it was published").isEmpty();
+        assertThat(oldLocal.got).as("had it when it was published").isEmpty();
+    }
+
+    @Test
+    void anEventGivenUpThatOnlyOlderConsumersTakeGoesNowhereAndOneNobodyTakesIsUnhandled() {
+        Local oldLocal = new Local();
+        bus.addUntypedBehaviour(oldLocal, null, Moved.class.getName());
+        long later = System.currentTimeMillis() + 60_000;
+
+        assertThat(bus.tryDeliverGivenUp(Moved.class.getName(), List.of(), Map.of("robotId", "r1"), later)).isTrue();
+        assertThat(bus.tryDeliverGivenUp(Docked.class.getName() + "X", List.of(), Map.of("robotId", "r2"), later))
+                .isTrue();
+
+        assertThat(bus.statistics(Docked.class.getName() + "X").unhandled).isEqualTo(1);
+        assertThat(bus.statistics(Moved.class.getName()).unhandled).isZero();
+        assertThat(oldLocal.got).isEmpty();
+    }
 }

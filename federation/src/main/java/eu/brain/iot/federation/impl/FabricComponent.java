@@ -164,7 +164,7 @@ public final class FabricComponent implements Host, FabricMonitor {
                 config.tls(), config.trust_store(), config._trust_store_password(), Path.of(config.key_file()),
                 stateDir, config.keep_alive_s(), config.session_expiry_s(), config.resend_timeout_ms(),
                 config.max_pending(), config.max_age_ms(), config.batch_max_events(), config.install_bid_ms(),
-                config.install_timeout_ms());
+                config.install_timeout_ms(), config.offline_giveup_ms());
     }
 
     /** The configured name, else the framework property {@value #NODE_NAME_PROPERTY}, else the host name. */

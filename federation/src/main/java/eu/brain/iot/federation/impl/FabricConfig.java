@@ -75,4 +75,9 @@ public @interface FabricConfig {
     @AttributeDefinition(description = "How long an install on another node may take until its behaviour's interest"
             + " arrives, ms; then the BMS is told it failed, naming the node")
     long install_timeout_ms() default 120_000;
+
+    @AttributeDefinition(description = "How long another node may stay offline before the events kept for it (sent,"
+            + " not acknowledged) are published again here for whoever takes them then, ms; a node away for half of "
+            + "it or more comes back with a clean broker session")
+    long offline_giveup_ms() default 30_000;
 }

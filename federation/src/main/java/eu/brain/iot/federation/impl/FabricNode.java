@@ -26,8 +26,9 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * <ul>
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
- * {@link Inboxes} and their acknowledgements, connection events, the resend check; Paho's threads only queue work
- * here;</li>
+ * {@link Inboxes} and their acknowledgements, connection events, the resend check, giving up on the events kept for
+ * a node gone for good ({@link GivingUp}), when this node was last connected ({@link LastConnected}); Paho's threads
+ * only queue work here;</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals, takes
  * batches from them and publishes them;</li>
  * <li>publishers (on their own threads, when the outbox has room) and the bus's delivery workers call the
@@ -55,6 +56,8 @@ public final class FabricNode implements AutoCloseable {
     private final Membership membership;
     private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
     private final Inboxes inboxes;
+    private final GivingUp givingUp;
+    private final LastConnected lastConnected;
     private volatile List<InterestEntry> localInterest = List.of();
     private volatile boolean closed;
     private volatile boolean joined;
@@ -73,6 +76,7 @@ public final class FabricNode implements AutoCloseable {
         this.key = FabricKey.read(settings.keyFile());
         this.topics = new Topics(settings.fabric());
         Files.createDirectories(settings.stateDir());
+        this.lastConnected = new LastConnected(settings.stateDir(), settings.offlineGiveUpMillis());
         openOutboxes();
         this.in = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-in"));
         String self = settings.node();
@@ -98,8 +102,9 @@ public final class FabricNode implements AutoCloseable {
                         in.execute(() -> onMessage(topic, payload, signature));
                     }
                 });
+        this.givingUp = new GivingUp(settings, host, wire, in, this::node, outboxes);
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
-                this::node, this::outbox, ToNode::new);
+                this::node, this::outbox, ToNode::new, givingUp::wentOffline);
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
         this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
@@ -121,6 +126,12 @@ public final class FabricNode implements AutoCloseable {
         in.execute(this::connectOnce);
         long period = Math.max(10, settings.resendTimeoutMillis() / RESEND_CHECKS_PER_TIMEOUT);
         in.scheduleWithFixedDelay(() -> sender.resendCheck(false), period, period, TimeUnit.MILLISECONDS);
+        long seen = lastConnected.periodMillis();
+        in.scheduleWithFixedDelay(() -> {
+            if (link.isConnected()) {
+                lastConnected.connected(System.currentTimeMillis(), host, settings.fabric());
+            }
+        }, seen, seen, TimeUnit.MILLISECONDS);
     }
 
     private void connectOnce() {
@@ -128,7 +139,14 @@ public final class FabricNode implements AutoCloseable {
             return;
         }
         try {
-            link.connect(); // connectComplete follows on Paho's thread
+            long now = System.currentTimeMillis();
+            boolean clean = lastConnected.cleanStart(now);
+            if (clean) {
+                host.info("Fabric {}: node {} was away for {} ms, over half of offline.giveup.ms: it joins with a "
+                        + "clean broker session (its peers send again what they keep for it)", settings.fabric(),
+                        settings.node(), lastConnected.awayMillis(now));
+            }
+            link.connect(clean); // connectComplete follows on Paho's thread
         } catch (IOException | RuntimeException | Error e) {
             if (!warnedUnreachable) {
                 host.warn("Fabric {}: node {} cannot reach the broker: {}; trying again every {} ms",
@@ -179,6 +197,7 @@ public final class FabricNode implements AutoCloseable {
 
     private void onConnected() {
         warnedUnreachable = false;
+        lastConnected.connected(System.currentTimeMillis(), host, settings.fabric());
         boolean again = joinedBefore;
         joinedBefore = true;
         try {

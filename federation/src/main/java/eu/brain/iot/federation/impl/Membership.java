@@ -4,6 +4,7 @@ import java.util.Collection;
 import java.util.List;
 import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
+import java.util.function.BiConsumer;
 import java.util.function.Function;
 import java.util.function.LongSupplier;
 
@@ -38,10 +39,12 @@ final class Membership {
     private final Function<String, RemoteNode> nodes;
     private final Function<String, Outbox> outboxes;
     private final Function<String, EventForwarder> forwarders;
+    /** Told of every node that goes offline, with its status's connection ({@link GivingUp#wentOffline}). */
+    private final BiConsumer<String, Long> wentOffline;
 
     Membership(String fabric, Host host, ScheduledExecutorService in, LongSupplier connection,
             Function<String, RemoteNode> nodes, Function<String, Outbox> outboxes,
-            Function<String, EventForwarder> forwarders) {
+            Function<String, EventForwarder> forwarders, BiConsumer<String, Long> wentOffline) {
         this.fabric = fabric;
         this.host = host;
         this.in = in;
@@ -49,6 +52,7 @@ final class Membership {
         this.nodes = nodes;
         this.outboxes = outboxes;
         this.forwarders = forwarders;
+        this.wentOffline = wentOffline;
     }
 
     private RemoteNode node(String name) {
@@ -115,6 +119,9 @@ final class Membership {
             host.info("Fabric {}: node {} is {}", fabric, from, status.state());
         }
         syncForwarders(node);
+        if (before != Presence.OFFLINE && node.status == Presence.OFFLINE) {
+            wentOffline.accept(from, node.statusSince);
+        }
     }
 
     /** Forwarders for exactly the interest of an online node: new entries first, then the withdrawn ones go. */

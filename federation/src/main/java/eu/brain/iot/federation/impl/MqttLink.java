@@ -145,12 +145,14 @@ final class MqttLink {
     /**
      * Try to connect once, waiting up to the connection timeout.
      *
+     * @param cleanStart whether the broker drops this node's session first (subscriptions, queued messages)
      * @throws IOException saying why the broker could not be reached
      */
-    void connect() throws IOException {
+    void connect(boolean cleanStart) throws IOException {
         if (client.isConnected()) {
             return;
         }
+        options.setCleanStart(cleanStart);
         discard(client);
         client = newClient();
         since = System.currentTimeMillis();

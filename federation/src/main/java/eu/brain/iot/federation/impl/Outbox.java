@@ -6,6 +6,7 @@ import java.nio.file.Path;
 import java.util.ArrayDeque;
 import java.util.ArrayList;
 import java.util.List;
+import java.util.UUID;
 import java.util.concurrent.TimeUnit;
 
 import eu.brain.iot.federation.impl.Journal.Pending;
@@ -31,7 +32,10 @@ final class Outbox implements AutoCloseable {
 
     private final String destination;
     private final Journal journal;
-    private final String epoch;
+    /** Changed only by {@link #abandon}, under both {@link #journalLock} and this object's monitor. */
+    private volatile String epoch;
+    /** The highest sequence number read from the journal at start: events up to it were published before. */
+    private long restoredThrough;
     private final int maxPending;
     private final NodeStats stats;
 
@@ -61,6 +65,7 @@ final class Outbox implements AutoCloseable {
         this.lastSeq = l.lastSeq();
         this.ackedThrough = l.ackedThrough();
         this.journaledThrough = l.lastSeq();
+        this.restoredThrough = l.lastSeq();
         this.unsent.addAll(l.pending());
         stats.backlog(unsent.size());
     }
@@ -175,6 +180,15 @@ final class Outbox implements AutoCloseable {
         return !unsent.isEmpty();
     }
 
+    /** Events taken for one message, with the epoch they are numbered in. */
+    record Taken(String epoch, List<Pending> events) {
+    }
+
+    /** Take up to {@code max} events to send, with their epoch (read in the same step: see {@link #abandon}). */
+    synchronized Taken takeBatch(int max) {
+        return new Taken(epoch, take(max));
+    }
+
     /** Take up to {@code max} events to send, among those the journal holds ({@link #writeJournal} first). */
     synchronized List<Pending> take(int max) {
         List<Pending> batch = new ArrayList<>(Math.min(max, unsent.size()));
@@ -232,6 +246,48 @@ final class Outbox implements AutoCloseable {
         progressNanos = System.nanoTime();
         stats.resent(n);
         return n;
+    }
+
+    /**
+     * Give up on the destination (it stayed offline too long, {@link GivingUp}): every event kept for it, sent and not
+     * acknowledged or not sent yet, is taken out in sequence order, and the outbox starts a new sequence (a new epoch,
+     * numbered from 1) in memory and in the journal. An acknowledgement of the old epoch is ignored from then on.
+     *
+     * @return the events taken out, oldest first, and which of them were read from the journal at start
+     * @throws IOException when the journal could not be written: nothing was taken out
+     */
+    Abandoned abandon() throws IOException {
+        synchronized (journalLock) {
+            String newEpoch = UUID.randomUUID().toString();
+            journal.rewrite(newEpoch, 0, List.of());
+            List<Pending> taken;
+            long restored;
+            synchronized (this) {
+                restored = restoredThrough;
+                restoredThrough = 0;
+                taken = new ArrayList<>(unacked);
+                taken.addAll(unsent);
+                unacked.clear();
+                unsent.clear();
+                unjournaled.clear();
+                epoch = newEpoch;
+                lastSeq = 0;
+                ackedThrough = 0;
+                journaledThrough = 0;
+                ackToRecord = 0;
+                progressNanos = System.nanoTime();
+                stats.backlog(0);
+                notifyAll(); // appenders waiting for room
+            }
+            return new Abandoned(taken, restored);
+        }
+    }
+
+    /**
+     * Events given up: those numbered up to {@code restoredThrough} were read from the journal at start (published by
+     * an earlier run of this node, whose consumers this run cannot tell apart from new ones).
+     */
+    record Abandoned(List<Pending> events, long restoredThrough) {
     }
 
     synchronized int backlog() {

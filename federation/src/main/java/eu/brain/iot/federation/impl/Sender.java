@@ -95,13 +95,14 @@ final class Sender {
         if (node.status != Presence.ONLINE) {
             return false;
         }
-        List<Pending> batch = outbox.take(settings.batchMaxEvents());
+        Outbox.Taken taken = outbox.takeBatch(settings.batchMaxEvents());
+        List<Pending> batch = taken.events();
         if (batch.isEmpty()) {
             return false;
         }
         List<byte[]> events = new ArrayList<>(batch.size());
         batch.forEach(p -> events.add(p.json()));
-        byte[] payload = wire.batch(settings.node(), outbox.destination(), outbox.epoch(),
+        byte[] payload = wire.batch(settings.node(), outbox.destination(), taken.epoch(),
                 System.currentTimeMillis(), events);
         link.publish(topics.events(outbox.destination(), settings.node()), payload, false);
         node.stats.sent.add(batch.size());

@@ -24,11 +24,13 @@ import java.util.regex.Pattern;
  * @param batchMaxEvents most events per MQTT message
  * @param bidMillis how long a node asking the fabric which node installs a behaviour waits for the answers
  * @param installTimeoutMillis how long an install order to another node may take, its interest included
+ * @param offlineGiveUpMillis how long a node may stay offline before the events kept for it are published again
+ *        here, for whoever takes them then ({@link GivingUp})
  */
 public record Settings(String brokerUri, String fabric, String node, String username, String password, boolean tls,
         String trustStore, String trustStorePassword, Path keyFile, Path stateDir, int keepAliveSeconds,
         long sessionExpirySeconds, long resendTimeoutMillis, int maxPending, long maxAgeMillis, int batchMaxEvents,
-        long bidMillis, long installTimeoutMillis) {
+        long bidMillis, long installTimeoutMillis, long offlineGiveUpMillis) {
 
     /** Names usable as one MQTT topic level and one file name. */
     static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
@@ -45,6 +47,7 @@ public record Settings(String brokerUri, String fabric, String node, String user
         check(maxAgeMillis >= 1000, "max.age.ms", maxAgeMillis, "at least 1000");
         check(bidMillis >= 1, "install.bid.ms", bidMillis, "at least 1");
         check(installTimeoutMillis >= 1000, "install.timeout.ms", installTimeoutMillis, "at least 1000");
+        check(offlineGiveUpMillis >= 1000, "offline.giveup.ms", offlineGiveUpMillis, "at least 1000");
     }
 
     private static void check(boolean ok, String key, Object value, String expected) {
@@ -57,27 +60,34 @@ public record Settings(String brokerUri, String fabric, String node, String user
     /** Settings for a node with defaults for everything but its identity and folders (tests, tools). */
     public static Settings of(String brokerUri, String fabric, String node, Path keyFile, Path stateDir) {
         return new Settings(brokerUri, fabric, node, "", "", false, "", "", keyFile, stateDir, 10, 3600, 5000,
-                100_000, 300_000, 256, 100, 120_000);
+                100_000, 300_000, 256, 100, 120_000, 30_000);
     }
 
     /** The same settings with another resend timeout. */
     public Settings withResendTimeout(long millis) {
         return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
                 stateDir, keepAliveSeconds, sessionExpirySeconds, millis, maxPending, maxAgeMillis, batchMaxEvents,
-                bidMillis, installTimeoutMillis);
+                bidMillis, installTimeoutMillis, offlineGiveUpMillis);
     }
 
     /** The same settings with another keep-alive. */
     public Settings withKeepAlive(int seconds) {
         return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
                 stateDir, seconds, sessionExpirySeconds, resendTimeoutMillis, maxPending, maxAgeMillis,
-                batchMaxEvents, bidMillis, installTimeoutMillis);
+                batchMaxEvents, bidMillis, installTimeoutMillis, offlineGiveUpMillis);
     }
 
     /** The same settings with another bid deadline and install timeout. */
     public Settings withInstall(long bid, long timeout) {
         return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
                 stateDir, keepAliveSeconds, sessionExpirySeconds, resendTimeoutMillis, maxPending, maxAgeMillis,
-                batchMaxEvents, bid, timeout);
+                batchMaxEvents, bid, timeout, offlineGiveUpMillis);
+    }
+
+    /** The same settings with another give-up time for offline nodes. */
+    public Settings withOfflineGiveUp(long millis) {
+        return new Settings(brokerUri, fabric, node, username, password, tls, trustStore, trustStorePassword, keyFile,
+                stateDir, keepAliveSeconds, sessionExpirySeconds, resendTimeoutMillis, maxPending, maxAgeMillis,
+                batchMaxEvents, bidMillis, installTimeoutMillis, millis);
     }
 }

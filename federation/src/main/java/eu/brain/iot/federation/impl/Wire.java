@@ -93,15 +93,30 @@ final class Wire {
         }
         List<Event> list = new ArrayList<>(in.events().size());
         for (EventIn e : in.events()) {
-            if (e == null || e.seq() == null || e.type() == null || e.type().isEmpty() || e.data() == null) {
-                throw new MalformedException("an event needs 'seq', 'type' and an object 'data'");
-            }
-            List<String> types = e.types() == null ? new ArrayList<>() : new ArrayList<>(e.types());
-            types.removeIf(java.util.Objects::isNull);
-            list.add(new Event(e.seq(), e.type(), types, e.data()));
+            list.add(checked(e));
         }
         return new Batch(required(in.from(), "from"), required(in.to(), "to"), required(in.epoch(), "epoch"),
                 requiredNumber(in.sent(), "sent"), list);
+    }
+
+    /** One event as {@link #event} wrote it (an outbox's journal keeps them so). */
+    Event readEvent(byte[] json) throws MalformedException {
+        EventIn e;
+        try {
+            e = mapper.readValue(json, EventIn.class);
+        } catch (IOException x) {
+            throw new MalformedException("not an event: " + x.getMessage());
+        }
+        return checked(e);
+    }
+
+    private static Event checked(EventIn e) throws MalformedException {
+        if (e == null || e.seq() == null || e.type() == null || e.type().isEmpty() || e.data() == null) {
+            throw new MalformedException("an event needs 'seq', 'type' and an object 'data'");
+        }
+        List<String> types = e.types() == null ? new ArrayList<>() : new ArrayList<>(e.types());
+        types.removeIf(java.util.Objects::isNull);
+        return new Event(e.seq(), e.type(), types, e.data());
     }
 
     /** A batch as the parser reads it, before its checks. */

@@ -31,9 +31,12 @@ class FabricFaultsTest extends FabricTestBase {
         return "fabric-faults";
     }
 
+    /** How long the nodes of these tests keep the events of a node that went offline before they give them up. */
+    static final long GIVE_UP_MILLIS = 3_000;
+
     private TestNode node(String name, String brokerUri) throws Exception {
         TestNode n = new TestNode(name, Settings.of(brokerUri, "test", name, key, tmp.resolve("state-" + name))
-                .withResendTimeout(1000).withKeepAlive(2));
+                .withResendTimeout(1000).withKeepAlive(2).withOfflineGiveUp(GIVE_UP_MILLIS));
         nodes.add(n);
         n.start();
         return n;
@@ -109,6 +112,45 @@ class FabricFaultsTest extends FabricTestBase {
         await().atMost(DEADLINE).until(() -> slow.got.size() == total && a.statsOf("b").backlog() == 0);
         assertThat(slow.got).isEqualTo(range(total));
         assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+    }
+
+    /**
+     * A node dies for good with events for it not acknowledged (its behaviour never returned): once it has been
+     * offline for the give-up time, they reach the behaviour that came since on another node, once each, in order;
+     * the publisher's own behaviour, which had them already, gets none again.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void theEventsKeptForANodeGoneForGoodReachTheBehaviourThatCameSince(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a", broker.uri());
+        TestNode b = node("b", broker.uri());
+        Slow stuck = new Slow(); // never released: b acknowledges nothing
+        Recorder atA = new Recorder();
+        b.addBehaviour(stuck, null, MOVED);
+        a.addBehaviour(atA, null, MOVED);
+        FabricTest.awaitInterest(a, b, 1);
+        int total = 50;
+        for (int i = 1; i <= total; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        await("kept for b").atMost(DEADLINE).until(() -> atA.got.size() == total
+                && a.statsOf("b").backlog() == total);
+        long published = System.currentTimeMillis();
+        await("the clock moves on").atMost(DEADLINE).until(() -> System.currentTimeMillis() > published);
+        TestNode c = node("c", broker.uri());
+        Recorder atC = new Recorder();
+        c.addBehaviour(atC, null, MOVED); // came after the events: it never had them
+        FabricTest.awaitInterest(a, c, 1);
+
+        b.crash();
+        await("b offline at a").atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
+        await("given up, then taken by c").atMost(DEADLINE).until(() -> atC.got.size() == total);
+        assertThat(atC.seqs()).as("every event once, in publish order").isEqualTo(range(total));
+        assertThat(a.statsOf("b").backlog()).isZero();
+        assertThat(atA.got).as("none again to the behaviour that had them").hasSize(total);
+        assertThat(a.log).anyMatch(l -> l.contains("node b stayed offline for " + GIVE_UP_MILLIS + " ms: the " + total
+                + " event(s) kept for it are published again"));
     }
 
     /** A behaviour whose first {@code notify} does not return until the test releases it. */

@@ -57,6 +57,39 @@ class OutboxTest {
     }
 
     @Test
+    void givingUpTakesOutEverythingKeptInOrderAndStartsANewSequence() throws Exception {
+        String oldEpoch;
+        try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            oldEpoch = outbox.epoch();
+            append(outbox, 4);
+            outbox.writeJournal();
+            outbox.take(2); // 1 and 2 sent, not acknowledged; 3 and 4 not sent
+            append(outbox, 1); // 5: not in the journal yet
+
+            Outbox.Abandoned abandoned = outbox.abandon();
+
+            assertThat(abandoned.events()).extracting(Pending::seq).containsExactly(1L, 2L, 3L, 4L, 5L);
+            assertThat(abandoned.restoredThrough()).as("nothing read from the journal at start").isZero();
+            assertThat(outbox.epoch()).isNotEqualTo(oldEpoch);
+            assertThat(outbox.backlog()).isZero();
+            outbox.acked(oldEpoch, 5); // the old sequence's acknowledgement, late: nothing to free, no error
+            append(outbox, 1);
+            outbox.writeJournal();
+            Outbox.Taken next = outbox.takeBatch(10);
+            assertThat(next.epoch()).isEqualTo(outbox.epoch());
+            assertThat(next.events()).extracting(Pending::seq).as("numbered from 1 again").containsExactly(1L);
+        }
+        try (Outbox again = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
+            assertThat(again.epoch()).as("the journal has the new sequence").isNotEqualTo(oldEpoch);
+            append(again, 1);
+            again.writeJournal();
+            Outbox.Abandoned restored = again.abandon();
+            assertThat(restored.events()).extracting(Pending::seq).as("only what came after").containsExactly(1L, 2L);
+            assertThat(restored.restoredThrough()).as("1 was read from the journal at start, 2 was not").isEqualTo(1);
+        }
+    }
+
+    @Test
     void aRestartedPublisherFindsWhatWasNotAcknowledgedSentOrNot() throws Exception {
         String epoch;
         try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, new NodeStats())) {
