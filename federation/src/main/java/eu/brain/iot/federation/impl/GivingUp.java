@@ -16,15 +16,16 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
 /**
  * The recovery step for the events kept for a node that stays offline: once it has been offline for
  * {@link Settings#offlineGiveUpMillis} (its status unchanged since), its outbox gives them up ({@link Outbox#abandon}:
- * sent and not acknowledged, or not sent yet) and they are published again on this node's bus, oldest first, as
- * untyped events of their type, for whoever takes them now: a behaviour here or on another node, or the BMS, which
- * holds them for the behaviour it has installed. Without it a node killed for good kept them for ever, and a
- * behaviour waiting for an answer to one of them (a robot's offer to an orchestrator that ran there) waited for ever.
- * Events this node read from its journal at start (published by its earlier run) go to the BMS only when nothing
- * consumes them at all: every consumer is registered since, and some had them then.
- * The node, if it comes back, starts a new sequence from this one and, away that long, with a clean broker session
- * ({@link LastConnected}), so that it does not take them too. An event it took just before it went (its
- * acknowledgement lost) may be taken again by whoever takes it now.
+ * sent and not acknowledged, or not sent yet; a new sequence for that node) and they are published again on this
+ * node's bus, oldest first, to the consumers registered after each was first published, which cannot have had it (a
+ * behaviour installed since, here or on another node), or, when nothing consumes one at all, to the BMS, which holds
+ * it for the behaviour it installs ({@code RemoteEvents.tryDeliverGivenUp}): a node killed for good does not keep
+ * them for ever, nor a behaviour that waits for an answer to one of them (a robot's offer to an orchestrator that ran
+ * there) wait for ever. Events this node read from its journal at start (published by its earlier run) go to the BMS
+ * only when nothing consumes them at all: every consumer is registered since, and some had them then. The node, if
+ * it comes back away that long, joins with a clean broker session ({@link LastConnected}), so that the copies its old
+ * session queued do not reach it too. An event it took just before it went (its acknowledgement lost) may be taken
+ * again by the consumer that came since.
  * <p>
  * Threads: the fabric's inbound thread only.
  */
