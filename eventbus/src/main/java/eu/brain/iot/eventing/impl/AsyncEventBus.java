@@ -154,29 +154,6 @@ final class AsyncEventBus implements EventBus {
     }
 
     /**
-     * An event given up by a node that stayed offline (RemoteEvents#tryDeliverGivenUp): to the consumers registered
-     * after it was published, never waiting; the unhandled path when nothing consumes it at all.
-     */
-    boolean publishGivenUp(String eventType, List<String> typeNames, Map<String, Object> eventData,
-            long publishedMillis) {
-        if (eventType == null || eventType.isEmpty() || eventData == null) {
-            throw new IllegalArgumentException("tryDeliverGivenUp: eventType and eventData are required, got "
-                    + "eventType=" + eventType);
-        }
-        List<String> names = RouteTable.remoteNames(eventType, typeNames);
-        Map<String, Object> snapshot = EventMaps.copyMap(eventData);
-        RouteTable table = routes;
-        Route route = table.routeForGivenUp(eventType, names, this::countersFor);
-        ConsumerChannel[] targets = route.targets(snapshot);
-        if (targets.length == 0) {
-            return unhandled(table, route, snapshot, null, names, false, null);
-        }
-        ConsumerChannel[] since = java.util.Arrays.stream(targets).filter(c -> c.createdMillis > publishedMillis)
-                .toArray(ConsumerChannel[]::new);
-        return since.length == 0 || send(since, route, snapshot, false, null);
-    }
-
-    /**
      * The route of an event in a table; {@code type} is null for an untyped event, {@code remoteNames} null for
      * a local one.
      */
@@ -223,7 +200,7 @@ final class AsyncEventBus implements EventBus {
      * it changed since, the event is routed again (with the same answer of the policy), so that it can neither
      * be appended to the hold after a hand-over nor overtake held events.
      */
-    private boolean unhandled(RouteTable table, Route route, Object snapshot, Class<?> type, List<String> remoteNames,
+    boolean unhandled(RouteTable table, Route route, Object snapshot, Class<?> type, List<String> remoteNames,
             boolean wait, Runnable done) {
         Disposition decided = null;
         long deadline = 0;
@@ -319,7 +296,7 @@ final class AsyncEventBus implements EventBus {
         return true;
     }
 
-    private EventTypeCounters countersFor(String eventType) {
+    EventTypeCounters countersFor(String eventType) {
         return counters.computeIfAbsent(eventType, EventTypeCounters::new);
     }
 

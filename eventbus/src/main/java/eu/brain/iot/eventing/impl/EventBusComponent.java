@@ -281,7 +281,7 @@ public final class EventBusComponent implements EventBus, EventBusStatistics, He
     @Override
     public boolean tryDeliverGivenUp(String eventType, List<String> typeNames, Map<String, Object> eventData,
             long publishedMillis) {
-        return bus.publishGivenUp(eventType, typeNames, eventData, publishedMillis);
+        return GivenUp.publish(bus, eventType, typeNames, eventData, publishedMillis);
     }
 
     @Override

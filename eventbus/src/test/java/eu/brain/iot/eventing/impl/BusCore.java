@@ -95,7 +95,7 @@ public final class BusCore implements EventBus, HeldEvents, RemoteEvents {
     @Override
     public boolean tryDeliverGivenUp(String eventType, List<String> typeNames, Map<String, Object> eventData,
             long publishedMillis) {
-        return bus.publishGivenUp(eventType, typeNames, eventData, publishedMillis);
+        return GivenUp.publish(bus, eventType, typeNames, eventData, publishedMillis);
     }
 
     @Override

@@ -9,6 +9,7 @@ import java.util.ArrayList;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
@@ -115,7 +116,7 @@ final class Wire {
             throw new MalformedException("an event needs 'seq', 'type' and an object 'data'");
         }
         List<String> types = e.types() == null ? new ArrayList<>() : new ArrayList<>(e.types());
-        types.removeIf(java.util.Objects::isNull);
+        types.removeIf(Objects::isNull);
         return new Event(e.seq(), e.type(), types, e.data());
     }
 
