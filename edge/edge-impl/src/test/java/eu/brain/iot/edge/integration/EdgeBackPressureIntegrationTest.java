@@ -138,8 +138,11 @@ class EdgeBackPressureIntegrationTest {
 
             long onTime = after.onTime - before.onTime;
             long late = after.late - before.late;
+            // Skipped: a device's previous poll still open at its next period. One stall of this JVM (a collection,
+            // another module's tests on the same two cores) holds every poll open once: 1,000 skipped, seen once in
+            // CI. A fleet thread waiting for the bus would hold every poll for the overflow timeout: all but a few.
             assertThat(after.skipped - before.skipped).as("polls skipped: a device's previous poll still open")
-                    .isZero();
+                    .isLessThanOrEqualTo(WINDOW_POLLS / 4);
             assertThat(after.failed - before.failed).as("polls failed").isZero();
             // On time: sent within 500 ms +- 50 ms of the device's previous poll. A fleet thread that waited for the
             // bus would stall every poll for the bus's overflow timeout (5 s): nearly every poll late, by seconds.
