@@ -13,7 +13,6 @@ import java.util.Objects;
 
 import com.fasterxml.jackson.core.JsonProcessingException;
 import com.fasterxml.jackson.databind.DeserializationFeature;
-import com.fasterxml.jackson.core.type.TypeReference;
 import com.fasterxml.jackson.databind.JsonNode;
 import com.fasterxml.jackson.databind.ObjectMapper;
 import com.fasterxml.jackson.databind.module.SimpleModule;
@@ -36,9 +35,6 @@ final class Wire {
 
     /** Most events accepted in one message; a bigger batch is refused as malformed. */
     static final int MAX_BATCH_EVENTS = 10_000;
-
-    private static final TypeReference<Map<String, Object>> MAP = new TypeReference<>() {
-    };
 
     private final ObjectMapper mapper = new ObjectMapper().registerModule(new SimpleModule("fabric-wire")
             .addSerializer(TemporalAccessor.class, ToStringSerializer.instance))
