@@ -27,10 +27,9 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
  * {@link Inboxes} and their acknowledgements, connection events, the resend check, giving up on the events kept for
- * a node gone for good ({@link GivingUp}), when this node was last connected ({@link LastConnected}); Paho's threads
- * only queue work here;</li>
- * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals, takes
- * batches from them and publishes them;</li>
+ * a node gone for good ({@link GivingUp}); Paho's threads only queue work here;</li>
+ * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals and when
+ * this node was last connected ({@link LastConnected}), takes batches from the outboxes and publishes them;</li>
  * <li>publishers (on their own threads, when the outbox has room) and the bus's delivery workers call the
  * forwarders, which append to the outboxes (see there).</li>
  * </ul>
@@ -105,7 +104,7 @@ public final class FabricNode implements AutoCloseable {
         this.givingUp = new GivingUp(settings, host, wire, in, this::node, outboxes);
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
                 this::node, this::outbox, ToNode::new, givingUp::wentOffline);
-        this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host);
+        this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host, lastConnected);
         this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
             @Override
@@ -126,12 +125,6 @@ public final class FabricNode implements AutoCloseable {
         in.execute(this::connectOnce);
         long period = Math.max(10, settings.resendTimeoutMillis() / RESEND_CHECKS_PER_TIMEOUT);
         in.scheduleWithFixedDelay(() -> sender.resendCheck(false), period, period, TimeUnit.MILLISECONDS);
-        long seen = lastConnected.periodMillis();
-        in.scheduleWithFixedDelay(() -> {
-            if (link.isConnected()) {
-                lastConnected.connected(System.currentTimeMillis(), host, settings.fabric());
-            }
-        }, seen, seen, TimeUnit.MILLISECONDS);
     }
 
     private void connectOnce() {
@@ -197,7 +190,6 @@ public final class FabricNode implements AutoCloseable {
 
     private void onConnected() {
         warnedUnreachable = false;
-        lastConnected.connected(System.currentTimeMillis(), host, settings.fabric());
         boolean again = joinedBefore;
         joinedBefore = true;
         try {

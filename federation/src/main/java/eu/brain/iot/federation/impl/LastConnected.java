@@ -6,14 +6,15 @@ import java.nio.file.Files;
 import java.nio.file.Path;
 
 /**
- * When this node was last connected to the broker, kept in {@value #FILE} in its state folder (written when it
- * connects, then every {@link #periodMillis} while it is), so that a node that was away for half of
+ * When this node was last connected to the broker, kept in {@value #FILE} in its state folder (written at most every
+ * {@link #periodMillis} while it is connected), so that a node that was away for half of
  * {@link Settings#offlineGiveUpMillis} or more connects with a clean broker session: its peers may have given up on
  * the events they kept for it ({@link GivingUp}) and published them again elsewhere, and the copies its old session
  * still queues would reach it too. A clean session loses nothing: every peer sends again what it keeps for this node
  * and was not acknowledged. A time written late only makes a clean start likelier.
  * <p>
- * Threads: the fabric's inbound thread only.
+ * Threads: the sender thread, which writes the node's files, tells it while connected ({@link #connected}); the
+ * inbound thread asks it before connecting; under this object's monitor.
  */
 final class LastConnected {
 
@@ -23,6 +24,8 @@ final class LastConnected {
     private final long giveUpMillis;
     /** The last time known to be connected (epoch ms), -1 if never. */
     private long lastMillis;
+    /** When the file was last written (epoch ms). */
+    private long writtenMillis = Long.MIN_VALUE / 2;
     private boolean warned;
 
     LastConnected(Path stateDir, long giveUpMillis) {
@@ -44,9 +47,13 @@ final class LastConnected {
         return Math.max(1000, giveUpMillis / 6);
     }
 
-    /** Connected now: remember it, in the file too. */
-    void connected(long nowMillis, Host host, String fabric) {
+    /** Connected now: remember it, and write it to the file when the last write is {@link #periodMillis} old. */
+    synchronized void connected(long nowMillis, Host host, String fabric) {
         lastMillis = nowMillis;
+        if (nowMillis - writtenMillis < periodMillis()) {
+            return;
+        }
+        writtenMillis = nowMillis;
         try {
             Files.writeString(file, Long.toString(nowMillis), StandardCharsets.US_ASCII);
             warned = false;
@@ -60,12 +67,12 @@ final class LastConnected {
     }
 
     /** @return how long ago this node was last connected, -1 if never */
-    long awayMillis(long nowMillis) {
+    synchronized long awayMillis(long nowMillis) {
         return lastMillis < 0 ? -1 : Math.max(0, nowMillis - lastMillis);
     }
 
     /** @return whether the next connection starts a clean broker session */
-    boolean cleanStart(long nowMillis) {
+    synchronized boolean cleanStart(long nowMillis) {
         return lastMillis >= 0 && nowMillis - lastMillis >= giveUpMillis / 2;
     }
 }

@@ -139,9 +139,9 @@ final class LeaseTable {
     }
 
     /**
-     * How long after a release (or a holder's last lease) was heard its device may be taken: a lease period, and a quarter more for the time
-     * the release took to arrive and the holder's last command to land (the judge's rule: two nodes command a robot
-     * at least a lease period apart).
+     * How long after a release (or a holder's last lease) was heard its device may be taken: a lease period, and a
+     * quarter more for the time the release took to arrive and the holder's last command to land (the judge's rule:
+     * two nodes command a robot at least a lease period apart).
      */
     private long releaseGapNanos() {
         return leaseNanos + leaseNanos / 4;

@@ -11,8 +11,9 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
 
 /**
  * Writes the {@link Outbox}es' journals, takes batches of events from them and publishes them, signed, to the nodes
- * they are for; sends again what was not acknowledged in time. An outbox of a node that is not online keeps its events
- * until the node is back (its acknowledgement could not come).
+ * they are for; sends again what was not acknowledged in time. Between its rounds (at least once a second) it tells
+ * {@link LastConnected} that this node is connected, if it is: a late time only makes a clean start likelier. An
+ * outbox of a node that is not online keeps its events until the node is back (its acknowledgement could not come).
  * <p>
  * Threads: its own thread ({@code brain-iot-fabric-out}) sends; anyone may {@link #wake} it; the resend check runs
  * on the fabric's inbound thread. The outboxes synchronise themselves.
@@ -26,13 +27,14 @@ final class Sender {
     private final Collection<Outbox> outboxes;
     private final Function<String, RemoteNode> nodes;
     private final Host host;
+    private final LastConnected lastConnected;
     private final Thread thread;
     private final Object signal = new Object();
     private boolean wanted;
     private volatile boolean closed;
 
     Sender(Settings settings, Wire wire, Topics topics, MqttLink link, Collection<Outbox> outboxes,
-            Function<String, RemoteNode> nodes, Host host) {
+            Function<String, RemoteNode> nodes, Host host, LastConnected lastConnected) {
         this.settings = settings;
         this.wire = wire;
         this.topics = topics;
@@ -40,6 +42,7 @@ final class Sender {
         this.outboxes = outboxes;
         this.nodes = nodes;
         this.host = host;
+        this.lastConnected = lastConnected;
         this.thread = new Thread(this::loop, "brain-iot-fabric-out");
         thread.setDaemon(true);
     }
@@ -63,6 +66,9 @@ final class Sender {
                         signal.wait(1000);
                     }
                     wanted = false;
+                }
+                if (link.isConnected()) {
+                    lastConnected.connected(System.currentTimeMillis(), host, settings.fabric());
                 }
                 for (Outbox outbox : outboxes) {
                     outbox.writeJournal(); // connected or not: what was accepted is kept if this node is killed
