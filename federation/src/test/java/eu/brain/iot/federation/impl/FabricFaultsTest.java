@@ -153,6 +153,50 @@ class FabricFaultsTest extends FabricTestBase {
                 + " event(s) kept for it are published again"));
     }
 
+    /**
+     * A node killed with events sent to its broker session and not acknowledged, and started again once they were
+     * given up (and taken by a behaviour on another node): it connects with a clean session, so the copies its old
+     * session held never reach it; what is published after its return does.
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aNodeBackAfterItsEventsWereGivenUpGetsNoneOfThemFromItsOldSession(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a", broker.uri());
+        TestNode b = node("b", broker.uri());
+        Recorder atB = new Recorder();
+        b.addBehaviour(atB, null, MOVED);
+        FabricTest.awaitInterest(a, b, 1);
+        atB.dieWith(b); // like kill -9: no goodbye; a sends on to b's session until the broker says b is gone
+        nodes.remove(b);
+        int total = 50;
+        for (int i = 1; i <= total; i++) {
+            a.bus.deliver(new Moved("r1", i));
+        }
+        await("sent to b's session and kept for b").atMost(DEADLINE).until(() -> a.statsOf("b").backlog() == total
+                && a.statsOf("b").sent() >= total);
+        long published = System.currentTimeMillis();
+        await("the clock moves on").atMost(DEADLINE).until(() -> System.currentTimeMillis() > published);
+        TestNode c = node("c", broker.uri());
+        Recorder atC = new Recorder();
+        c.addBehaviour(atC, null, MOVED);
+        FabricTest.awaitInterest(a, c, 1);
+        await("b offline at a").atMost(DEADLINE).until(() -> a.statusOf("b").equals("offline"));
+        await("given up, then taken by c").atMost(DEADLINE).until(() -> atC.got.size() == total);
+
+        TestNode b2 = node("b", broker.uri()); // the same name and state folder
+        Recorder atB2 = new Recorder();
+        b2.addBehaviour(atB2, null, MOVED);
+        await("b back at a").atMost(DEADLINE).until(() -> a.statusOf("b").equals("online"));
+        FabricTest.awaitInterest(a, b2, 1);
+        a.bus.deliver(new Moved("r1", total + 1));
+        await("the event published since reaches b and c").atMost(DEADLINE)
+                .until(() -> atB2.got.size() >= 1 && atC.got.size() == total + 1);
+        assertThat(atB2.seqs()).as("none of the copies b's old session held").containsExactly((long) total + 1);
+        assertThat(atC.seqs()).isEqualTo(range(total + 1));
+        assertThat(b2.log).anyMatch(l -> l.contains("it joins with a clean broker session"));
+    }
+
     /** A behaviour whose first {@code notify} does not return until the test releases it. */
     public static final class Slow implements SmartBehaviour<Moved> {
         final List<Long> got = new CopyOnWriteArrayList<>();
