@@ -7,10 +7,11 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
 
 /**
  * What one node's edge knows of the robots and doors it owns, published every poll period when the fleet is shared
- * between the nodes of a fabric (the edge's {@code share} is not {@code all}). Every edge consumes the reports of
- * the other nodes, so each node's device model shows the whole fleet, each device with the node that owns it (a
- * behaviour that coordinates robots of several nodes reads them all there), while only the owner polls a device and
- * sends it commands.
+ * between the nodes of a fabric (the edge's {@code share} is not {@code all}), and for one device alone as soon as it
+ * changed, ahead of the events of the change: a report names all or some of the node's devices, and a receiver takes
+ * those it names. Every edge consumes the reports of the other nodes, so each node's device model shows the whole
+ * fleet, each device with the node that owns it (a behaviour that coordinates robots of several nodes reads them all
+ * there), while only the owner polls a device and sends it commands.
  * <p>
  * Each entry of {@link #devices} is a map with the keys {@code id}, {@code kind} ({@code robot} or {@code door}),
  * {@code status} (a {@code ResourceStatus} name of the device model), {@code lastPoll} (epoch milliseconds of the
@@ -22,6 +23,6 @@ public class DeviceReport extends BrainIoTEvent {
 
     /** The reporting node's name (its edge's node name). */
     public String node;
-    /** The devices this node owns, one map each (keys above). */
+    /** Devices this node owns, all of them or those that changed, one map each (keys above). */
     public List<Map<String, Object>> devices;
 }

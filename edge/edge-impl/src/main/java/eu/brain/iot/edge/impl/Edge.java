@@ -31,8 +31,9 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
  * benchmark use it directly.
  * <p>
  * A fleet shared between the nodes of a fabric (a share other than {@code all}): every poll period the edge reports
- * the devices it owns ({@link DeviceReport}, on the fleet thread), and its model shows the devices the other nodes
- * report beside its own ({@link RemoteDevices}). A command reaches every node's edge; the owner performs it, the
+ * the devices it owns ({@link DeviceReport}, on the fleet thread), and each device that changed at once, ahead of the
+ * events of the change ({@link ChangeReports}); its model shows the devices the other nodes report beside its own
+ * ({@link RemoteDevices}). A command reaches every node's edge; the owner performs it, the
  * others leave it, except the node it was published on when no node owns the device now: that one refuses it, so
  * that the command has an outcome.
  */
@@ -65,7 +66,8 @@ final class Edge implements DeviceModel, AutoCloseable {
         this.api = new FleetApi(nodeName);
         this.ownership = new Ownership(nodeName);
         this.outbox = new Outbox(events, log);
-        this.store = new DeviceStore(new EdgeEvents(outbox, new MissionTracker(api, fleet, outbox, log)));
+        this.store = new DeviceStore(new ChangeReports(new EdgeEvents(outbox, new MissionTracker(api, fleet, outbox,
+                log)), this::reportDevice));
         this.poller = new FleetPoller(fleet, api, store, outbox, log, ownership);
         ownership.listener(poller::ownershipChanged);
         this.commands = new CommandRunner(api, store, event -> fleet.run(() -> outbox.publish(event),
@@ -117,6 +119,22 @@ final class Edge implements DeviceModel, AutoCloseable {
                 // the edge is closing: no more reports
             }
         }
+    }
+
+    /** On the fleet thread, when a device this node owns changed: that device alone, to the other nodes. */
+    private void reportDevice(String id) {
+        FleetSettings s = api.settings();
+        if (s == null || s.share().mode() == Share.Mode.ALL) {
+            return;
+        }
+        store.snapshot(id).ifPresent(device -> {
+            DeviceReport r = new DeviceReport();
+            r.node = nodeName;
+            r.devices = RemoteDevices.encode(List.of(device));
+            if (!r.devices.isEmpty()) {
+                outbox.publish(r);
+            }
+        });
     }
 
     /** Another node's report (on the bus's thread). */

@@ -7,6 +7,7 @@ import java.time.Duration;
 import java.util.List;
 import java.util.Optional;
 import java.util.concurrent.CompletableFuture;
+import java.util.concurrent.CopyOnWriteArrayList;
 import java.util.concurrent.atomic.AtomicReference;
 
 import org.junit.jupiter.api.AfterEach;
@@ -16,6 +17,7 @@ import org.junit.jupiter.api.Test;
 import eu.brain.iot.edge.api.CommandOutcome;
 import eu.brain.iot.edge.api.DeviceReport;
 import eu.brain.iot.edge.api.GoToCommand;
+import eu.brain.iot.edge.api.RobotPositionChanged;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceStatus;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
@@ -36,11 +38,19 @@ class SharedFleetTest {
         final RecordingSink recorded = new RecordingSink();
         final AtomicReference<Edge> other = new AtomicReference<>();
 
+        /** For each robot position this node published: the position, then where the other node's model had it. */
+        final List<String> positionsSeenThere = new CopyOnWriteArrayList<>();
+
         @Override
         public boolean offer(BrainIoTEvent event) {
             Edge to = other.get();
             if (event instanceof DeviceReport r && to != null) {
                 to.reported(r);
+            }
+            if (event instanceof RobotPositionChanged p && p.previousX != null && to != null) {
+                positionsSeenThere.add(p.robotId + " at " + p.x + "," + p.y + ", there " + p.robotId + " at "
+                        + to.resource(p.robotId, "position", "x").map(v -> v.value()).orElse(null) + ","
+                        + to.resource(p.robotId, "position", "y").map(v -> v.value()).orElse(null));
             }
             return recorded.offer(event);
         }
@@ -120,6 +130,30 @@ class SharedFleetTest {
         assertThat(outcome.accepted).as(outcome.reason).isTrue();
         assertThat(sim.commandOrigins().robots().get("robot1").node()).isEqualTo("node2");
         assertThat(sink1.recorded.of(CommandOutcome.class)).isEmpty();
+    }
+
+    /**
+     * A robot that moves is reported on its own before the event of its move: when the other node hears of the move,
+     * its model shows the robot where the event says (with only the report every period, it showed the cell before).
+     */
+    @Test
+    void aRobotThatMovedIsReportedToTheOtherNodeAheadOfTheEventOfItsMove() {
+        awaitWholeFleetOnBoth();
+        GoToCommand go = new GoToCommand();
+        go.deviceId = "robot1"; // node2's
+        go.commandId = "c-4";
+        go.x = 2; // straight down from its dock (2,1): robot2 stands east of it
+        go.y = 4;
+        assertThat(node2.execute(go, false).orElseThrow().join().accepted).isTrue();
+
+        await("robot1 moved three times").atMost(DEADLINE).until(() -> {
+            sim.step(1);
+            return sink2.positionsSeenThere.size() >= 3;
+        });
+        assertThat(sink2.positionsSeenThere).allSatisfy(seen -> {
+            String[] halves = seen.split(", there ");
+            assertThat(halves[1]).as(seen).isEqualTo(halves[0]);
+        });
     }
 
     @Test
