@@ -78,7 +78,8 @@ public final class FabricCommands {
         try {
             FabricKey.generate(Path.of(file));
             return "fabric key written to " + Path.of(file).toAbsolutePath() + "; copy it to every node of the "
-                    + "fabric (owner-only permissions) and set key.file in PID " + FabricConfig.PID;
+                    + "fabric (owner-only permissions) and set key.file in PID " + FabricConfig.PID + "; a node reads "
+                    + "it when it starts or its configuration changes (start a running node again to join with it)";
         } catch (IOException | RuntimeException e) {
             return "fabric:keygen: " + e.getMessage();
         }

@@ -107,7 +107,9 @@ public final class FabricComponent implements Host, FabricMonitor {
             Settings settings = settings(config, context);
             joined = new FabricNode(settings, this);
         } catch (IOException | IllegalArgumentException | IllegalStateException e) {
-            why = e.getMessage();
+            why = e.getMessage() + (e instanceof IOException ? "; the node reads its key and state when it starts or"
+                    + " its configuration (" + FabricConfig.PID + ") changes: start it again once they are in place"
+                    : "");
             log.error("This node does not join a fabric: {}", why);
         }
         this.node = joined;

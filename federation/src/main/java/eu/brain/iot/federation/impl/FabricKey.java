@@ -1,6 +1,7 @@
 package eu.brain.iot.federation.impl;
 
 import java.io.IOException;
+import java.nio.charset.CharacterCodingException;
 import java.nio.charset.StandardCharsets;
 import java.nio.file.FileAlreadyExistsException;
 import java.nio.file.Files;
@@ -48,16 +49,17 @@ public final class FabricKey {
                     + "command 'fabric:keygen " + file + "' (or java -cp <federation jar> "
                     + KeyGen.class.getName() + " " + file + ") and copy it to every node of the fabric");
         }
-        String text = Files.readString(file, StandardCharsets.US_ASCII).trim();
         byte[] secret;
         try {
-            secret = Base64.getDecoder().decode(text);
-        } catch (IllegalArgumentException e) {
-            throw new IOException("the fabric key file " + file + " is not a key (Base64 expected): " + e.getMessage());
+            secret = Base64.getDecoder().decode(Files.readString(file, StandardCharsets.US_ASCII).trim());
+        } catch (IllegalArgumentException | CharacterCodingException e) {
+            throw new IOException("the fabric key file " + file + " is not a key: a key file holds one line of Base64, "
+                    + "as fabric:keygen writes it (here: " + e.getMessage() + "); copy the fabric's key file here, or "
+                    + "make a new one with fabric:keygen for every node");
         }
         if (secret.length < KEY_BYTES) {
             throw new IOException("the fabric key in " + file + " is too short (" + secret.length + " bytes, at least "
-                    + KEY_BYTES + "); make a new one with fabric:keygen");
+                    + KEY_BYTES + "); make a new one with fabric:keygen for every node");
         }
         return new FabricKey(secret);
     }

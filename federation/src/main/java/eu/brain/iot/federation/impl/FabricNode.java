@@ -64,6 +64,8 @@ public final class FabricNode implements AutoCloseable {
      *  next connection); the node was connected before. */
     private boolean connecting;
     private boolean warnedUnreachable;
+    /** Whether the clean start of this absence was logged (the inbound thread only). */
+    private boolean toldCleanStart;
     private boolean joinedBefore;
 
     /**
@@ -134,7 +136,8 @@ public final class FabricNode implements AutoCloseable {
         try {
             long now = System.currentTimeMillis();
             boolean clean = lastConnected.cleanStart(now);
-            if (clean) {
+            if (clean && !toldCleanStart) {
+                toldCleanStart = true; // once per absence, not at every attempt while the broker cannot be reached
                 host.info("Fabric {}: node {} was away for {} ms, over half of offline.giveup.ms: it joins with a "
                         + "clean broker session (its peers send again what they keep for it)", settings.fabric(),
                         settings.node(), lastConnected.awayMillis(now));
@@ -190,6 +193,7 @@ public final class FabricNode implements AutoCloseable {
 
     private void onConnected() {
         warnedUnreachable = false;
+        toldCleanStart = false;
         boolean again = joinedBefore;
         joinedBefore = true;
         try {

@@ -88,8 +88,8 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         this.thread = Executors.newSingleThreadScheduledExecutor(r -> new Thread(r, "brain-iot-fabric-leases"));
         if (ownership == null) {
             this.self = null;
-            LOG.log(System.Logger.Level.WARNING, "Device leases configured ({0}) on a node without an edge: nothing "
-                    + "to lease", LeaseConfig.PID);
+            LOG.log(System.Logger.Level.INFO, "Device leases ({0}): no edge on this node yet, nothing to lease until "
+                    + "one comes (the leases start with it)", LeaseConfig.PID);
             return;
         }
         this.self = ownership.nodeName();

@@ -114,6 +114,23 @@ class TrustTest extends FabricTestBase {
     }
 
     @Test
+    void aKeyFileThatHoldsNoKeySaysWhatItShouldHoldAndWhatToDo() throws Exception {
+        Path text = Files.writeString(tmp.resolve("hello.key"), "hello\n");
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> FabricKey.read(text))
+                .hasMessageStartingWith("the fabric key file " + text + " is not a key: a key file holds one line of "
+                        + "Base64, as fabric:keygen writes it (here: ")
+                .hasMessageEndingWith("copy the fabric's key file here, or make a new one with fabric:keygen for "
+                        + "every node");
+        Path binary = Files.write(tmp.resolve("binary.key"), new byte[] { (byte) 0xff, (byte) 0xfe, 1 });
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> FabricKey.read(binary))
+                .hasMessageContaining("is not a key: a key file holds one line of Base64");
+        Path shortKey = Files.writeString(tmp.resolve("short.key"), "AAECAwQ=\n");
+        org.assertj.core.api.Assertions.assertThatThrownBy(() -> FabricKey.read(shortKey)).hasMessage("the fabric key "
+                + "in " + shortKey + " is too short (5 bytes, at least 32); make a new one with fabric:keygen for "
+                + "every node");
+    }
+
+    @Test
     void keygenRefusesToOverwriteAKey() throws Exception {
         Path k = tmp.resolve("k");
         FabricKey.generate(k);
