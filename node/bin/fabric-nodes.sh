@@ -26,14 +26,19 @@
 # node/config's files): broker.uri, fabric.name, node.name, key.file, state.dir. The key file is created (32 random bytes,
 # base64, mode 600) when missing; every node of a fabric must be given the same one.
 #
-# Exit code: 0 after Ctrl-C/SIGTERM stopped every node, 1 when the broker or a node did not start (its log is
-# shown), 2 for a bad command line.
+# A fabric of several nodes is "ready" once every node has joined it; a node that does not join (its key, a broker
+# that does not take it) stops them all, its log's reason shown. A broker given by URI must answer before any node
+# starts.
+#
+# Exit code: 130 after Ctrl-C, 143 after SIGTERM (every node stopped), 1 when the broker or a node did not start or
+# join (its log is shown) or a node ended, 2 for a bad command line.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
 broker_jar="$root/broker/target/broker.jar"
 max_nodes=20
 ready_timeout_s=180
+join_timeout_s=60
 no_fleet_port=9 # the edge of a node without the fleet polls here: the discard port, which a usual machine does not serve
 
 nodes=1
@@ -55,6 +60,14 @@ port_arg() { # port_arg <flag> <value>: the value when it is a port 1..65535, el
   echo "$2"
 }
 
+# value_example <option>: a value to show in the message for an option written without '='
+value_example() {
+  case "$1" in
+    --nodes) echo 3 ;; --broker) echo tcp://127.0.0.1:1883 ;; --fabric|--name) echo NAME ;; --state) echo DIR ;;
+    *) echo PORT ;;
+  esac
+}
+
 for arg in "$@"; do
   case "$arg" in
     --nodes=*)
@@ -63,8 +76,8 @@ for arg in "$@"; do
         || die "--nodes needs a number of nodes 1..$max_nodes, found '$nodes'" ;;
     --broker=*)
       broker_uri="${arg#--broker=}"
-      [[ $broker_uri =~ ^(tcp|mqtt|ssl|mqtts)://[^/:]+:[0-9]+/?$ ]] \
-        || die "--broker needs a broker URI such as tcp://127.0.0.1:1883, found '$broker_uri'" ;;
+      [[ $broker_uri =~ ^(tcp|mqtt|ssl|mqtts)://[^/:]+:([0-9]{1,5})/?$ ]] && (( BASH_REMATCH[2] <= 65535 )) \
+        || die "--broker needs a broker URI with a port 1..65535, such as tcp://127.0.0.1:1883, found '$broker_uri'" ;;
     --broker-port=*) broker_port="$(port_arg --broker-port "${arg#--broker-port=}")" ;;
     --fabric=*)
       fabric_name="${arg#--fabric=}"
@@ -83,6 +96,8 @@ for arg in "$@"; do
     --rebuild|-D*|-X*) node_args+=("$arg") ;;
     --check) die "--check starts one node: use ./fabric-node --check without --nodes/--broker" ;;
     -h|--help) sed -n '2,/^[^#]/{/^#/!q;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
+    --nodes|--broker|--broker-port|--fabric|--state|--http-port|--name|--fleet-port)
+      die "$arg takes its value after '=', e.g. $arg=$(value_example "$arg")" ;;
     *) die "unknown argument '$arg' (try --help)" ;;
   esac
 done
@@ -91,6 +106,15 @@ if [[ -n $single_name ]] && (( nodes > 1 )); then
 fi
 (( http_base + nodes - 1 <= 65535 )) || die "--http-port=$http_base leaves no port for node $nodes"
 $nodes_given || [[ -n $broker_uri ]] || die "give --nodes=N or --broker=URI"
+# a broker given by URI answers before anything is made or started
+if [[ $broker_uri =~ ^[a-z]+://([^/:]+):([0-9]+) ]]; then
+  host="${BASH_REMATCH[1]}" port="${BASH_REMATCH[2]}"
+  timeout 3 bash -c 'exec 3<>"/dev/tcp/$0/$1"' "$host" "$port" 2>/dev/null || {
+    echo "fabric-nodes: nothing answers at $host:$port (--broker=$broker_uri) within 3 s: start the broker there," \
+      "or leave --broker out for the embedded one" >&2
+    exit 1
+  }
+fi
 mkdir -p "$state_dir"
 state_dir="$(cd "$state_dir" && pwd)"
 
@@ -204,6 +228,7 @@ if [[ -z $broker_uri ]]; then
   echo "fabric-nodes: embedded broker $broker_uri (pid $broker_pid, log $broker_log)" >&2
 fi
 
+
 for k in $(seq 1 "$nodes"); do configure_node "$k" "$broker_uri"; done
 
 # One node with a shell: the node runs in the foreground, reading the terminal; when it ends, the EXIT trap stops
@@ -229,6 +254,22 @@ await_line "${node_pids[0]}" "$state_dir/$(node_name 1)/node.log" "fabric node r
 for k in $(seq 2 "$nodes"); do start_node "$k"; done
 for k in $(seq 2 "$nodes"); do
   await_line "${node_pids[k - 1]}" "$state_dir/node$k/node.log" "fabric node ready in" "node$k"
+done
+
+# joined: each node's log says it joined, or why it did not (its key, the broker refusing it)
+for k in $(seq 1 "$nodes"); do
+  log="$state_dir/$(node_name "$k")/node.log"
+  deadline=$((SECONDS + join_timeout_s))
+  until grep -q "Fabric .*: node .* joined through " "$log" 2>/dev/null; do
+    trouble="$(grep -m1 -E 'does not join a fabric|cannot reach the broker' "$log" 2>/dev/null \
+      | sed 's/^.* - //')" || true
+    if [[ -n $trouble ]] || (( SECONDS >= deadline )); then
+      echo "fabric-nodes: $(node_name "$k") did not join the fabric '$fabric_name' through $broker_uri:" \
+        "${trouble:-no word of it within $join_timeout_s s} (log: $log)" >&2
+      exit 1
+    fi
+    sleep 0.1
+  done
 done
 
 echo "fabric-nodes: fabric '$fabric_name' of $nodes node(s) through $broker_uri, ready:" >&2

@@ -112,6 +112,28 @@ class FabricNodeScriptTest {
         assertThat(port.output).contains("--http-port needs a port 1..65535, found '99999'");
     }
 
+    @Test
+    void severalNodesAreRefusedBeforeAnythingStartsWhenAnOptionOrTheBrokerIsWrong() throws Exception {
+        Result spaced = run("--nodes", "3");
+        assertThat(spaced.code).isEqualTo(2);
+        assertThat(spaced.output).contains("--nodes takes its value after '=', e.g. --nodes=3");
+        Result port = run("--nodes=2", "--broker=tcp://127.0.0.1:99999");
+        assertThat(port.code).isEqualTo(2);
+        assertThat(port.output).contains("--broker needs a broker URI with a port 1..65535, such as "
+                + "tcp://127.0.0.1:1883, found 'tcp://127.0.0.1:99999'");
+
+        int closed;
+        try (java.net.ServerSocket s = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress())) {
+            closed = s.getLocalPort();
+        }
+        Path state = configDir.resolve("fabric");
+        Result nobody = run("--nodes=2", "--broker=tcp://127.0.0.1:" + closed, "--state=" + state);
+        assertThat(nobody.code).isEqualTo(1);
+        assertThat(nobody.output).contains("nothing answers at 127.0.0.1:" + closed + " (--broker=tcp://127.0.0.1:"
+                + closed + ") within 3 s: start the broker there, or leave --broker out for the embedded one");
+        assertThat(state).as("nothing made, no key").doesNotExist();
+    }
+
     private void fakeMaven(int exitCode, String body) throws IOException {
         Path mvn = bin.resolve("mvn");
         Files.writeString(mvn, "#!/bin/sh\n" + body + "exit " + exitCode + "\n");
