@@ -18,9 +18,7 @@ public final class Main {
         try {
             options = OptionsParser.parse(args);
         } catch (UsageException e) {
-            err.println("warehouse-scenario: " + e.getMessage());
-            err.print(OptionsParser.USAGE);
-            return 2;
+            return badOption(e, err);
         }
         if (options == null) {
             out.print(OptionsParser.USAGE);
@@ -29,9 +27,7 @@ public final class Main {
         try {
             return new ScenarioRunner(options, List.of(args), out).run();
         } catch (UsageException e) {
-            err.println("warehouse-scenario: " + e.getMessage());
-            err.print(OptionsParser.USAGE);
-            return 2;
+            return badOption(e, err);
         } catch (IOException e) {
             err.println("warehouse-scenario: " + e.getMessage());
             return 1;
@@ -40,5 +36,12 @@ public final class Main {
             err.println("warehouse-scenario: interrupted");
             return 1;
         }
+    }
+
+    /** A bad option: what was wrong on one line, and where the options are listed (the usage would scroll it away). */
+    private static int badOption(UsageException e, PrintStream err) {
+        err.println("warehouse-scenario: " + e.getMessage());
+        err.println("(./warehouse-scenario --help lists the options)");
+        return 2;
     }
 }

@@ -101,7 +101,9 @@ final class NodeGroup {
         NodeSetup.Join join = null;
         if (o.fabric() != null) {
             String uri = o.fabric().broker();
-            if (uri == null) {
+            if (uri != null) {
+                BrokerReach.check(uri);
+            } else {
                 broker = BrokerProcess.start(o.root(), o.runDir());
                 uri = broker.uri();
                 out.printf("broker: embedded, %s (pid %d, log %s)%n", uri, broker.pid(), broker.log());
@@ -179,9 +181,25 @@ final class NodeGroup {
         }
     }
 
-    /** Waits until the nodes' edges, together, show every device with status OK. */
+    /**
+     * Waits until the nodes' edges, together, show every device with status OK.
+     *
+     * @throws IOException naming the devices missing and, first, what each node's log says kept it out of its fabric
+     *                     (a node outside its fabric leases none of its devices)
+     */
     void awaitDevices(List<String> devices, Duration timeout) throws IOException, InterruptedException {
-        EdgeProbe.awaitDevices(members.stream().map(m -> m.probe).toList(), devices, timeout);
+        try {
+            EdgeProbe.awaitDevices(members.stream().map(m -> m.probe).toList(), devices, timeout);
+        } catch (IOException e) {
+            List<String> troubles = new ArrayList<>();
+            for (Member m : members) {
+                FabricTrouble.in(m.node.log()).ifPresent(t -> troubles.add(m.spec.name() + ": " + t));
+            }
+            if (troubles.isEmpty()) {
+                throw e;
+            }
+            throw new IOException(String.join("; ", troubles) + " (and so " + e.getMessage() + ")", e);
+        }
     }
 
     /** Every node's JVM has ended (killed or by itself): the run cannot go on. */

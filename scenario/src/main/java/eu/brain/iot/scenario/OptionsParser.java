@@ -1,5 +1,6 @@
 package eu.brain.iot.scenario;
 
+import java.io.IOException;
 import java.net.URI;
 import java.net.URISyntaxException;
 import java.nio.file.Files;
@@ -20,6 +21,8 @@ import picocli.CommandLine.Option;
 import picocli.CommandLine.OverwrittenOptionException;
 import picocli.CommandLine.ParameterException;
 import picocli.CommandLine.UnmatchedArgumentException;
+
+import eu.brain.iot.federation.impl.FabricKey;
 
 /**
  * Reads the command line (picocli) into {@link Options}; every mistake is a {@link UsageException} saying what to
@@ -206,11 +209,14 @@ final class OptionsParser {
             for (String spec : stopBehaviour) {
                 faults.add(PlannedFault.StopBehaviour.parse(spec));
             }
+            List<PlannedFault.KillNode> kills = new ArrayList<>();
             for (String spec : killNode) {
                 PlannedFault.KillNode kill = PlannedFault.KillNode.parse(spec);
                 kill.checkNodes(nodeCount);
-                faults.add(kill);
+                kills.add(kill);
             }
+            PlannedFault.KillNode.checkTogether(kills, nodeCount);
+            faults.addAll(kills);
         } catch (IllegalArgumentException e) {
             throw new UsageException(e.getMessage());
         }
@@ -262,9 +268,9 @@ final class OptionsParser {
             uri = null;
         }
         if (uri == null || !("tcp".equals(uri.getScheme()) || "ssl".equals(uri.getScheme())) || uri.getHost() == null
-                || uri.getPort() < 1) {
-            throw new UsageException("--broker must be an MQTT broker's URI with its port, e.g. tcp://127.0.0.1:1883 "
-                    + "or ssl://broker.example:8883, found '" + broker + "'");
+                || uri.getPort() < 1 || uri.getPort() > MAX_PORT) {
+            throw new UsageException("--broker must be an MQTT broker's URI with its port (1.." + MAX_PORT + "), e.g. "
+                    + "tcp://127.0.0.1:1883 or ssl://broker.example:8883, found '" + broker + "'");
         }
         return nodeCount < 2 ? new Options.Fabric(broker, key) : new Options.Fabric(broker, key, runFabricName());
     }
@@ -279,8 +285,16 @@ final class OptionsParser {
             throw new UsageException("--fabric-key " + fabricKey + ": no such readable file (make one with "
                     + "fabric:keygen in a node's shell, or leave the option out for a new key)");
         }
+        try {
+            FabricKey.read(key); // read as every node reads it, so that a bad key stops the run here, not its nodes
+        } catch (IOException e) {
+            throw new UsageException("--fabric-key " + fabricKey + ": " + e.getMessage());
+        }
         return key;
     }
+
+    /** The highest TCP port. */
+    private static final int MAX_PORT = 65_535;
 
     /** A fabric name of this run's own, so that nodes of another run on the same broker never meet these. */
     private static String runFabricName() {

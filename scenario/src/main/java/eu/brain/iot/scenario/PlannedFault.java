@@ -209,6 +209,42 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
                     + (nodes == 2 ? "node1, node2" : "node1.." + Options.nodeName(nodes)) + " (--nodes " + nodes + ")");
         }
 
+        /** Whether the node is down at that warehouse time because of this kill. */
+        private boolean downAt(long millis) {
+            return millis >= atMillis && (!restarted() || millis < atMillis + downMillis);
+        }
+
+        /**
+         * The kills of one run together: none finds its node down already, and at no time is every node down (the
+         * run would end there).
+         *
+         * @throws IllegalArgumentException saying which kill and why
+         */
+        static void checkTogether(List<KillNode> kills, int nodes) {
+            for (KillNode k : kills) {
+                for (KillNode earlier : kills) {
+                    if (earlier != k && earlier.node.equals(k.node) && earlier.atMillis <= k.atMillis
+                            && earlier.downAt(k.atMillis)) {
+                        String back = earlier.restarted() ? ", started again at " + seconds(earlier.endsAtMillis())
+                                : ", for good";
+                        throw new IllegalArgumentException("--kill-node " + k.node + " at " + seconds(k.atMillis) + ": "
+                                + k.node + " is down then (killed at " + seconds(earlier.atMillis) + back + "): kill it "
+                                + "once it is back, or give the earlier kill a shorter downtime");
+                    }
+                }
+                long down = kills.stream().filter(o -> o.downAt(k.atMillis)).map(KillNode::node).distinct().count();
+                if (down >= nodes) {
+                    throw new IllegalArgumentException("--kill-node: at " + seconds(k.atMillis) + " every node of the "
+                            + "run is down, which ends it: keep one running (or give a kill a downtime, +D, that "
+                            + "brings its node back before)");
+                }
+            }
+        }
+
+        private static String seconds(long millis) {
+            return String.format(java.util.Locale.ROOT, "%.1f s", millis / 1000.0);
+        }
+
         @Override
         public long endsAtMillis() {
             return restarted() ? atMillis + downMillis : atMillis;

@@ -42,10 +42,10 @@ final class ScenarioRunner {
         this.out = out;
     }
 
-    /** @return the exit code: 0 passed, 1 failed (or could not run) */
     /** The robot behaviour's default planning window ({@code traffic.window}), in steps. */
     private static final int TRAFFIC_WINDOW = 16;
 
+    /** @return the exit code: 0 passed, 1 failed (or could not run) */
     int run() throws UsageException, IOException, InterruptedException {
         WarehouseMap map = Warehouses.of(options);
         checkFaultRobots(map);

@@ -102,6 +102,25 @@ class NodesOptionsTest {
     }
 
     @Test
+    void killsThatWouldEndTheRunOrFindTheirNodeDownAreRefused() throws Exception {
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node1@10s", "--kill-node",
+                "node2@10s")).hasMessage("--kill-node: at 10.0 s every node of the run is down, which ends it: "
+                        + "keep one running (or give a kill a downtime, +D, that brings its node back before)");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node1@10s+20s", "--kill-node",
+                "node2@25s")).hasMessageStartingWith("--kill-node: at 25.0 s every node of the run is down");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "3", "--kill-node", "node2@30s", "--kill-node",
+                "node2@40s")).hasMessage("--kill-node node2 at 40.0 s: node2 is down then (killed at 30.0 s, for "
+                        + "good): kill it once it is back, or give the earlier kill a shorter downtime");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "3", "--kill-node", "node2@30s+20s", "--kill-node",
+                "node2@40s")).hasMessageContaining("(killed at 30.0 s, started again at 50.0 s)");
+
+        assertThat(OptionsParser.parse("--nodes", "2", "--kill-node", "node1@10s+5s", "--kill-node", "node2@20s")
+                .faults()).hasSize(2); // node1 is back at 15 s
+        assertThat(OptionsParser.parse("--nodes", "3", "--kill-node", "node2@10s+5s", "--kill-node", "node2@20s")
+                .faults()).hasSize(2); // killed again once back
+    }
+
+    @Test
     void aKillNodeMistakeNamesThePartThatIsWrong() {
         assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--kill-node", "node2"))
                 .hasMessage("--kill-node 'node2': write NODE@TIME or NODE@TIME+DOWNTIME, e.g. node2@20s (node2 killed "
@@ -121,7 +140,8 @@ class NodesOptionsTest {
                 new PrintStream(out), new PrintStream(err));
         assertThat(code).isEqualTo(2);
         assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("warehouse-scenario: --kill-node: no node "
-                + "'node5'; the run's nodes are node1, node2 (--nodes 2)\nUsage: ");
+                + "'node5'; the run's nodes are node1, node2 (--nodes 2)\n"
+                + "(./warehouse-scenario --help lists the options)\n");
         assertThat(dir).as("nothing started").isEmptyDirectory();
         assertThat(Files.exists(dir.resolve("node1"))).isFalse();
     }

@@ -109,25 +109,38 @@ class OptionsParserTest {
     @Test
     void aBadBrokerOrKeySaysWhatIsWrong(@TempDir Path dir) {
         assertThatThrownBy(() -> OptionsParser.parse("--broker", "127.0.0.1:1883")).hasMessage("--broker must be an "
-                + "MQTT broker's URI with its port, e.g. tcp://127.0.0.1:1883 or ssl://broker.example:8883, found "
-                + "'127.0.0.1:1883'");
+                + "MQTT broker's URI with its port (1..65535), e.g. tcp://127.0.0.1:1883 or ssl://broker.example:8883, "
+                + "found '127.0.0.1:1883'");
         assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1"))
                 .hasMessageStartingWith("--broker must be an MQTT broker's URI with its port");
         assertThatThrownBy(() -> OptionsParser.parse("--fabric-key", "k")).hasMessage("--fabric-key needs --broker "
                 + "or --nodes 2 or more (the key signs what the nodes send through the broker)");
         assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1:1883", "--fabric-key",
                 dir.resolve("none").toString())).hasMessageContaining("no such readable file");
+        assertThatThrownBy(() -> OptionsParser.parse("--broker", "tcp://127.0.0.1:99999"))
+                .hasMessageStartingWith("--broker must be an MQTT broker's URI with its port (1..65535)");
     }
 
     @Test
-    void mainPrintsOneLineAndTheUsageAndExitsWith2() {
+    void aKeyFileThatHoldsNoKeyIsABadOption(@TempDir Path dir) throws Exception {
+        Path shortKey = java.nio.file.Files.writeString(dir.resolve("short.key"), "AAECAwQ=\n");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--fabric-key", shortKey.toString()))
+                .hasMessage("--fabric-key " + shortKey + ": the fabric key in " + shortKey + " is too short (5 bytes, "
+                        + "at least 32); make a new one with fabric:keygen for every node");
+        Path text = java.nio.file.Files.writeString(dir.resolve("hello.key"), "hello\n");
+        assertThatThrownBy(() -> OptionsParser.parse("--nodes", "2", "--fabric-key", text.toString()))
+                .hasMessageStartingWith("--fabric-key " + text + ": the fabric key file " + text + " is not a key");
+    }
+
+    @Test
+    void mainPrintsWhatWasWrongOnOneLineAndWhereTheOptionsAreAndExitsWith2() {
         ByteArrayOutputStream out = new ByteArrayOutputStream();
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int code = Main.run(new String[] {"--wait-limit", "-3"}, new PrintStream(out), new PrintStream(err));
         assertThat(code).isEqualTo(2);
         String text = err.toString(StandardCharsets.UTF_8);
-        assertThat(text).startsWith("warehouse-scenario: --wait-limit must be a number 0.5..3600.0, found '-3'\n"
-                + "Usage: ./warehouse-scenario");
+        assertThat(text).isEqualTo("warehouse-scenario: --wait-limit must be a number 0.5..3600.0, found '-3'\n"
+                + "(./warehouse-scenario --help lists the options)\n");
         assertThat(text).doesNotContain("Exception");
         assertThat(out.size()).isZero();
     }
@@ -179,7 +192,8 @@ class OptionsParserTest {
         assertThat(code).isEqualTo(2);
         assertThat(err.toString(StandardCharsets.UTF_8)).startsWith("warehouse-scenario: --stop-behaviour "
                 + "'nosuchbundle@10s': no behaviour 'nosuchbundle'; write BEHAVIOUR@TIME, e.g. robot@90s (BEHAVIOUR is "
-                + "robot, door, orchestrator, or a bundle's full symbolic name, with a dot)\nUsage: ");
+                + "robot, door, orchestrator, or a bundle's full symbolic name, with a dot)\n"
+                + "(./warehouse-scenario --help lists the options)\n");
         assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "@10s"))
                 .hasMessageStartingWith("--stop-behaviour '@10s': the BEHAVIOUR before '@' is missing");
         assertThatThrownBy(() -> OptionsParser.parse("--stop-behaviour", "eu..robot@10s"))
