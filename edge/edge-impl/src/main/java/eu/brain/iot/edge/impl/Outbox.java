@@ -4,6 +4,7 @@ import java.util.Iterator;
 import java.util.LinkedHashMap;
 import java.util.Map;
 
+import eu.brain.iot.edge.api.DeviceReport;
 import eu.brain.iot.edge.api.RobotPositionChanged;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 
@@ -18,9 +19,10 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  * <p>
  * Under that pressure a robot's position is <em>coalesced</em>: a new {@link RobotPositionChanged} replaces the
  * robot's one still waiting (it moves to the end of the line, keeping the older one's {@code previousX/Y}, which
- * is where behaviours last heard the robot was), so waiting positions are bounded by the fleet's size. Every other
- * event (obstacles, carts, doors, mission ends, reachability, command outcomes) waits whole: those are what the
- * orchestration rests on. Counters say how many events were refused, waited and were coalesced; the first refusal
+ * is where behaviours last heard the robot was), so waiting positions are bounded by the fleet's size. So is a
+ * {@link DeviceReport}: a new one replaces a waiting one of the same devices (it says all the older one said, newer),
+ * at the end of the line. Every other event (obstacles, carts, doors, mission ends, reachability, command outcomes)
+ * waits whole: those are what the orchestration rests on. Counters say how many events were refused, waited and were coalesced; the first refusal
  * after a quiet spell, and every minute while it lasts, is logged.
  * <p>
  * Ownership: the fleet thread alone calls every method except the counters' getters (volatile/adders read by
@@ -28,8 +30,11 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  */
 final class Outbox {
 
-    /** Where an event waits: the robot's position slot (coalesced), or a slot of its own. */
-    private record Slot(String positionOf, long seq) {
+    /**
+     * Where an event waits: a slot that a newer event of the same kind about the same devices takes over (a robot's
+     * position, a report of the same devices), or a slot of its own ({@code coalesceKey} null, {@code seq} unique).
+     */
+    private record Slot(String coalesceKey, long seq) {
     }
 
     private static final long WARN_EVERY_MILLIS = 60_000;
@@ -42,6 +47,7 @@ final class Outbox {
     private volatile int depth;
     private volatile long refusals;
     private volatile long coalesced;
+    private volatile long reportsReplaced;
     private volatile long failed;
 
     Outbox(EventSink sink, EdgeLog log) {
@@ -55,7 +61,7 @@ final class Outbox {
             return;
         }
         if (event instanceof RobotPositionChanged position) {
-            Slot slot = new Slot(position.robotId, 0);
+            Slot slot = new Slot("position of " + position.robotId, 0);
             BrainIoTEvent older = waiting.remove(slot);
             if (older instanceof RobotPositionChanged replaced) {
                 position.previousX = replaced.previousX;
@@ -63,6 +69,12 @@ final class Outbox {
                 coalesced++;
             }
             waiting.put(slot, position);
+        } else if (event instanceof DeviceReport report) {
+            Slot slot = new Slot("report of " + reportedIds(report), 0);
+            if (waiting.remove(slot) != null) {
+                reportsReplaced++;
+            }
+            waiting.put(slot, report);
         } else {
             waiting.put(new Slot(null, ++seq), event);
         }
@@ -112,6 +124,17 @@ final class Outbox {
         return taken;
     }
 
+    /** The ids a report names, in its order (the edge writes them sorted). */
+    private static String reportedIds(DeviceReport report) {
+        StringBuilder ids = new StringBuilder();
+        if (report.devices != null) {
+            for (Map<String, Object> device : report.devices) {
+                ids.append(device.get("id")).append(',');
+            }
+        }
+        return ids.toString();
+    }
+
     /** Events waiting now. */
     int depth() {
         return depth;
@@ -129,6 +152,11 @@ final class Outbox {
     /** Robot positions replaced by a newer one while they waited. */
     long coalesced() {
         return coalesced;
+    }
+
+    /** Device reports replaced by a newer one of the same devices while they waited. */
+    long reportsReplaced() {
+        return reportsReplaced;
     }
 
     /** Events the bus rejected with an error (logged each time). */

@@ -8,12 +8,16 @@ import java.util.List;
 import org.junit.jupiter.api.Test;
 
 import eu.brain.iot.edge.api.CommandOutcome;
+import eu.brain.iot.edge.api.DeviceReport;
 import eu.brain.iot.edge.api.MissionFinished;
 import eu.brain.iot.edge.api.ObstacleDetected;
 import eu.brain.iot.edge.api.RobotPositionChanged;
 import eu.brain.iot.eventing.api.BrainIoTEvent;
 
-/** The edge's outbox: never waits, keeps order, coalesces only robot positions, drops nothing silently. */
+/**
+ * The edge's outbox: never waits, keeps order, coalesces only robot positions and device reports, drops nothing
+ * silently.
+ */
 class OutboxTest {
 
     final RecordingSink sink = new RecordingSink();
@@ -87,6 +91,35 @@ class OutboxTest {
         assertThat(sent.get(2)).isSameAs(outcome);
         assertThat(((RobotPositionChanged) sent.get(3)).robotId).isEqualTo("robot2");
         assertThat(outbox.coalesced()).isEqualTo(1);
+    }
+
+    static DeviceReport report(String node, String... ids) {
+        DeviceReport r = new DeviceReport();
+        r.node = node;
+        r.devices = java.util.Arrays.stream(ids).map(id -> java.util.Map.<String, Object>of("id", id)).toList();
+        return r;
+    }
+
+    @Test
+    void aWaitingReportIsReplacedByANewerOneOfTheSameDevicesAtTheEndOfTheLine() {
+        sink.accepting = false;
+        DeviceReport first = report("node1", "robot1");
+        outbox.publish(first);
+        DeviceReport all = report("node1", "door1", "robot1", "robot2");
+        outbox.publish(all);
+        MissionFinished end = finished("robot1", 3);
+        outbox.publish(end);
+        DeviceReport newer = report("node1", "robot1");
+        outbox.publish(newer);
+        DeviceReport robot2 = report("node1", "robot2");
+        outbox.publish(robot2);
+        assertThat(outbox.depth()).isEqualTo(4);
+        assertThat(outbox.reportsReplaced()).isEqualTo(1);
+
+        sink.accepting = true;
+        outbox.flush();
+        assertThat(sink.events).containsExactly(all, end, newer, robot2);
+        assertThat(outbox.coalesced()).as("robot positions").isZero();
     }
 
     @Test
