@@ -39,6 +39,7 @@ broker_jar="$root/broker/target/broker.jar"
 max_nodes=20
 ready_timeout_s=180
 join_timeout_s=60
+reach_grace_s=10
 no_fleet_port=9 # the edge of a node without the fleet polls here: the discard port, which a usual machine does not serve
 
 nodes=1
@@ -228,7 +229,6 @@ if [[ -z $broker_uri ]]; then
   echo "fabric-nodes: embedded broker $broker_uri (pid $broker_pid, log $broker_log)" >&2
 fi
 
-
 for k in $(seq 1 "$nodes"); do configure_node "$k" "$broker_uri"; done
 
 # One node with a shell: the node runs in the foreground, reading the terminal; when it ends, the EXIT trap stops
@@ -256,13 +256,15 @@ for k in $(seq 2 "$nodes"); do
   await_line "${node_pids[k - 1]}" "$state_dir/node$k/node.log" "fabric node ready in" "node$k"
 done
 
-# joined: each node's log says it joined, or why it did not (its key, the broker refusing it)
+# joined: each node's log says it joined, or why it did not: at once when it does not join at all (its key), after
+# reach_grace_s when it cannot reach the broker (a first attempt may fail while the broker warms up; the node retries)
 for k in $(seq 1 "$nodes"); do
   log="$state_dir/$(node_name "$k")/node.log"
-  deadline=$((SECONDS + join_timeout_s))
+  deadline=$((SECONDS + join_timeout_s)) grace=$((SECONDS + reach_grace_s))
   until grep -q "Fabric .*: node .* joined through " "$log" 2>/dev/null; do
-    trouble="$(grep -m1 -E 'does not join a fabric|cannot reach the broker' "$log" 2>/dev/null \
-      | sed 's/^.* - //')" || true
+    signs='does not join a fabric'
+    (( SECONDS >= grace )) && signs+='|cannot reach the broker'
+    trouble="$(grep -m1 -E "$signs" "$log" 2>/dev/null | sed 's/^.* - //')" || true
     if [[ -n $trouble ]] || (( SECONDS >= deadline )); then
       echo "fabric-nodes: $(node_name "$k") did not join the fabric '$fabric_name' through $broker_uri:" \
         "${trouble:-no word of it within $join_timeout_s s} (log: $log)" >&2

@@ -33,9 +33,9 @@ import eu.brain.iot.edge.model.api.UnknownResourceException;
  * A fleet shared between the nodes of a fabric (a share other than {@code all}): every poll period the edge reports
  * the devices it owns ({@link DeviceReport}, on the fleet thread), and each device that changed at once, ahead of the
  * events of the change ({@link ChangeReports}); its model shows the devices the other nodes report beside its own
- * ({@link RemoteDevices}). A command reaches every node's edge; the owner performs it, the
- * others leave it, except the node it was published on when no node owns the device now: that one refuses it, so
- * that the command has an outcome.
+ * ({@link RemoteDevices}). A command reaches every node's edge; the owner performs it, the others leave it, except
+ * the node it was published on when no node owns the device now: that one refuses it, so that the command has an
+ * outcome.
  */
 final class Edge implements DeviceModel, AutoCloseable {
 

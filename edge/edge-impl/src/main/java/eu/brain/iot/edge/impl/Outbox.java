@@ -22,8 +22,8 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
  * is where behaviours last heard the robot was), so waiting positions are bounded by the fleet's size. So is a
  * {@link DeviceReport}: a new one replaces a waiting one of the same devices (it says all the older one said, newer),
  * at the end of the line. Every other event (obstacles, carts, doors, mission ends, reachability, command outcomes)
- * waits whole: those are what the orchestration rests on. Counters say how many events were refused, waited and were coalesced; the first refusal
- * after a quiet spell, and every minute while it lasts, is logged.
+ * waits whole: those are what the orchestration rests on. Counters say how many events were refused, waited and were
+ * coalesced; the first refusal after a quiet spell, and every minute while it lasts, is logged.
  * <p>
  * Ownership: the fleet thread alone calls every method except the counters' getters (volatile/adders read by
  * the statistics); events from other threads (command outcomes) are handed to the fleet thread first.
