@@ -172,11 +172,17 @@ broker_pid=
 node_pids=()
 stop_all() {
   local pid
+  if [[ ${#node_pids[@]} -gt 0 || -n $broker_pid ]]; then
+    echo "fabric-nodes: stopping ${#node_pids[@]} node(s)$( [[ -n $broker_pid ]] && echo " and the broker")" >&2
+  fi
   for pid in ${node_pids[@]+"${node_pids[@]}"}; do kill -TERM "$pid" 2>/dev/null || true; done
   for pid in ${node_pids[@]+"${node_pids[@]}"}; do wait "$pid" 2>/dev/null || true; done
   if [[ -n $broker_pid ]]; then
     kill -TERM "$broker_pid" 2>/dev/null || true
     wait "$broker_pid" 2>/dev/null || true
+  fi
+  if [[ ${#node_pids[@]} -gt 0 || -n $broker_pid ]]; then
+    echo "fabric-nodes: stopped" >&2
   fi
 }
 
