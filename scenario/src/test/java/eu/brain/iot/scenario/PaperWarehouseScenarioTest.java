@@ -128,6 +128,15 @@ class PaperWarehouseScenarioTest {
         Process broker = new ProcessBuilder(mosquitto.toString(), "-c", conf.toString()).redirectErrorStream(true)
                 .redirectOutput(run.resolve("mosquitto.log").toFile()).start();
         try {
+            int listening = port;
+            org.awaitility.Awaitility.await("Mosquitto listening on " + port).atMost(java.time.Duration.ofSeconds(30))
+                    .until(() -> {
+                        try (java.net.Socket probe = new java.net.Socket(InetAddress.getLoopbackAddress(), listening)) {
+                            return true;
+                        } catch (java.io.IOException notYet) {
+                            return false;
+                        }
+                    });
             String text = runScenario(run, "--broker", "tcp://127.0.0.1:" + port);
             assertThat(text).contains("PASS  the node joined the fabric through tcp://127.0.0.1:" + port,
                     "PASS  REQ-1 every cart lifted and carried to storage: 3/3 carts in storage",
