@@ -222,27 +222,23 @@ sealed interface PlannedFault permits PlannedFault.Offline, PlannedFault.StopBeh
          */
         static void checkTogether(List<KillNode> kills, int nodes) {
             for (KillNode k : kills) {
+                String at = WarehouseTime.format(k.atMillis);
                 for (KillNode earlier : kills) {
-                    if (earlier != k && earlier.node.equals(k.node) && earlier.atMillis <= k.atMillis
-                            && earlier.downAt(k.atMillis)) {
-                        String back = earlier.restarted() ? ", started again at " + seconds(earlier.endsAtMillis())
-                                : ", for good";
-                        throw new IllegalArgumentException("--kill-node " + k.node + " at " + seconds(k.atMillis) + ": "
-                                + k.node + " is down then (killed at " + seconds(earlier.atMillis) + back + "): kill it "
-                                + "once it is back, or give the earlier kill a shorter downtime");
+                    if (earlier != k && earlier.node.equals(k.node) && earlier.downAt(k.atMillis)) {
+                        String back = earlier.restarted()
+                                ? ", started again at " + WarehouseTime.format(earlier.endsAtMillis()) : ", for good";
+                        throw new IllegalArgumentException("--kill-node " + k.node + " at " + at + ": " + k.node
+                                + " is down then (killed at " + WarehouseTime.format(earlier.atMillis) + back
+                                + "): kill it once it is back, or give the earlier kill a shorter downtime");
                     }
                 }
                 long down = kills.stream().filter(o -> o.downAt(k.atMillis)).map(KillNode::node).distinct().count();
                 if (down >= nodes) {
-                    throw new IllegalArgumentException("--kill-node: at " + seconds(k.atMillis) + " every node of the "
-                            + "run is down, which ends it: keep one running (or give a kill a downtime, +D, that "
-                            + "brings its node back before)");
+                    throw new IllegalArgumentException("--kill-node: at " + at + " every node of the run is down, "
+                            + "which ends it: keep one running (or give a kill a downtime, +D, that brings its node "
+                            + "back before)");
                 }
             }
-        }
-
-        private static String seconds(long millis) {
-            return String.format(java.util.Locale.ROOT, "%.1f s", millis / 1000.0);
         }
 
         @Override

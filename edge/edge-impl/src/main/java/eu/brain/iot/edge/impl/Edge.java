@@ -103,14 +103,7 @@ final class Edge implements DeviceModel, AutoCloseable {
     private void report() {
         FleetSettings s = api.settings();
         try {
-            if (s != null && s.share().mode() != Share.Mode.ALL) {
-                DeviceReport r = new DeviceReport();
-                r.node = nodeName;
-                r.devices = RemoteDevices.encode(store.snapshots());
-                if (!r.devices.isEmpty()) {
-                    outbox.publish(r);
-                }
-            }
+            publishReport(s, store.snapshots());
         } finally {
             try {
                 fleet.schedule(this::report, s == null ? DEFAULT_REPORT_MILLIS : s.periodMillis(),
@@ -123,18 +116,20 @@ final class Edge implements DeviceModel, AutoCloseable {
 
     /** On the fleet thread, when a device this node owns changed: that device alone, to the other nodes. */
     private void reportDevice(String id) {
-        FleetSettings s = api.settings();
+        store.snapshot(id).ifPresent(device -> publishReport(api.settings(), List.of(device)));
+    }
+
+    /** A report of these devices of this node's, when the fleet is shared and there is any robot or door in them. */
+    private void publishReport(FleetSettings s, List<ProviderSnapshot> devices) {
         if (s == null || s.share().mode() == Share.Mode.ALL) {
             return;
         }
-        store.snapshot(id).ifPresent(device -> {
-            DeviceReport r = new DeviceReport();
-            r.node = nodeName;
-            r.devices = RemoteDevices.encode(List.of(device));
-            if (!r.devices.isEmpty()) {
-                outbox.publish(r);
-            }
-        });
+        DeviceReport r = new DeviceReport();
+        r.node = nodeName;
+        r.devices = RemoteDevices.encode(devices);
+        if (!r.devices.isEmpty()) {
+            outbox.publish(r);
+        }
     }
 
     /** Another node's report (on the bus's thread). */
