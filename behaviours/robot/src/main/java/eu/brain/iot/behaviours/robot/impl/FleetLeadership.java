@@ -72,9 +72,20 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         beats.scheduleAtFixedRate(this::beat, 0, BEAT_MILLIS, TimeUnit.MILLISECONDS);
     }
 
+    /**
+     * Stops beating and says so ({@link RobotBehaviourAlive#leaving}), after the last beat: the other instances, and
+     * the one the BMS starts here again, forget this one at once rather than one alive period later.
+     */
     @Deactivate
-    void deactivate() {
+    void deactivate() throws InterruptedException {
         beats.shutdownNow();
+        if (!beats.awaitTermination(BEAT_MILLIS, TimeUnit.MILLISECONDS)) {
+            LOG.log(System.Logger.Level.WARNING, "robot fleet leadership: the last beat did not end within {0} ms;"
+                    + " the farewell goes out anyway", BEAT_MILLIS);
+        }
+        RobotBehaviourAlive farewell = beatOf(rule.self());
+        farewell.leaving = true;
+        bus.tryDeliver(farewell);
     }
 
     /** @return whether this instance drives the fleet now */
@@ -84,19 +95,28 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
 
     @Override
     public synchronized void notify(RobotBehaviourAlive beat) {
-        if (beat.instance != null && beat.node != null) {
-            rule.heard(new Leadership.Instance(beat.node, beat.instance, beat.startedMillis), System.nanoTime());
+        if (beat.instance == null || beat.node == null) {
+            return;
         }
+        Leadership.Instance other = new Leadership.Instance(beat.node, beat.instance, beat.startedMillis);
+        if (beat.leaving) {
+            rule.left(other);
+        } else {
+            rule.heard(other, System.nanoTime());
+        }
+    }
+
+    private static RobotBehaviourAlive beatOf(Leadership.Instance self) {
+        RobotBehaviourAlive alive = new RobotBehaviourAlive();
+        alive.node = self.node();
+        alive.instance = self.id();
+        alive.startedMillis = self.startedMillis();
+        return alive;
     }
 
     private void beat() {
         try {
-            Leadership.Instance self = rule.self();
-            RobotBehaviourAlive alive = new RobotBehaviourAlive();
-            alive.node = self.node();
-            alive.instance = self.id();
-            alive.startedMillis = self.startedMillis();
-            bus.tryDeliver(alive);
+            bus.tryDeliver(beatOf(rule.self()));
             decide();
         } catch (RuntimeException e) {
             LOG.log(System.Logger.Level.WARNING, "robot fleet leadership: a beat failed", e);
@@ -110,7 +130,7 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
             if (now) {
                 LOG.log(System.Logger.Level.INFO, "robot fleet: this instance (node {0}) drives the fleet{1}",
                         rule.self().node(), lastLeader == null ? "" : "; the one on node " + lastLeader.node()
-                                + " is not heard any more");
+                                + " stopped or is not heard any more");
             } else if (leader != null) {
                 LOG.log(System.Logger.Level.INFO, "robot fleet: the instance on node {0} drives the fleet; this one"
                         + " (node {1}) stands by and takes over if it stops", leader.node(), rule.self().node());

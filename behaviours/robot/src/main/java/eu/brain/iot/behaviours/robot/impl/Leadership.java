@@ -2,7 +2,9 @@ package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.Comparator;
 import java.util.HashMap;
+import java.util.LinkedHashSet;
 import java.util.Map;
+import java.util.Set;
 
 /**
  * The rule that makes one robot behaviour instance of a fabric drive the whole fleet: one errand table (a cart is
@@ -13,7 +15,9 @@ import java.util.Map;
  * starting beside one that already drives the fleet never drives it too: the other's beats reach it only once its
  * own interest in them has crossed the fabric, which one alive period did not always cover. When the leader stops
  * beating (its node died), the next one leads after {@link #aliveMillis}, and takes the robots over as a behaviour
- * started again does.
+ * started again does; when it says it leaves ({@link #left}: its bundle stopped), at once. An instance that left is
+ * not heard again: a beat it sent before it left may reach a listener after its farewell, or after the instance that
+ * replaces it on the same node started, which would otherwise stand by for an alive period behind a dead leader.
  * <p>
  * Not thread-safe: its owner ({@link FleetLeadership}) calls it under its lock.
  */
@@ -28,6 +32,8 @@ final class Leadership {
 
     /** Alive periods a new instance on a shared fleet listens before it leads when it hears nobody. */
     static final int LISTEN_PERIODS = 3;
+    /** Instances that left remembered, the latest ones (an instance id is new at each start). */
+    static final int LEFT_REMEMBERED = 64;
 
     private final Instance self;
     private final long aliveMillis;
@@ -36,6 +42,8 @@ final class Leadership {
     private boolean heardAny;
     /** The other instances and when each was last heard (nanos). */
     private final Map<String, Heard> others = new HashMap<>();
+    /** The ids of the instances that said they left, oldest first, at most {@link #LEFT_REMEMBERED}. */
+    private final Set<String> left = new LinkedHashSet<>();
 
     private record Heard(Instance instance, long atNanos) {
     }
@@ -51,9 +59,21 @@ final class Leadership {
     }
 
     void heard(Instance other, long nowNanos) {
-        if (!other.id().equals(self.id())) {
+        if (!other.id().equals(self.id()) && !left.contains(other.id())) {
             others.put(other.id(), new Heard(other, nowNanos));
             heardAny = true; // the fabric brings the others' beats here: no more listening
+        }
+    }
+
+    /** The instance said it leaves: it is not alive any more, whatever beat of it comes later. */
+    void left(Instance other) {
+        if (other.id().equals(self.id())) {
+            return;
+        }
+        others.remove(other.id());
+        left.add(other.id());
+        if (left.size() > LEFT_REMEMBERED) {
+            left.remove(left.iterator().next());
         }
     }
 

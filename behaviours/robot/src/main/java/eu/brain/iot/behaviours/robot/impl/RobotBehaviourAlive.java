@@ -14,4 +14,9 @@ public class RobotBehaviourAlive extends BrainIoTEvent {
     public String instance;
     /** When the instance started, epoch milliseconds. */
     public long startedMillis;
+    /**
+     * The instance stops (its bundle stops or its node shuts down): the others forget it at once, rather than one
+     * alive period after its last beat, and the next one drives the fleet without the robots standing that long.
+     */
+    public boolean leaving;
 }

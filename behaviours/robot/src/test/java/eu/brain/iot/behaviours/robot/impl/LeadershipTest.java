@@ -61,4 +61,33 @@ class LeadershipTest {
         l.heard(A, 0);
         assertThat(l.leader(false, 10 * MS)).isEqualTo(A);
     }
+
+    @Test
+    void anInstanceThatSaysItLeavesIsForgottenAtOnceAndItsLaterBeatsAreIgnored() {
+        Leadership b = new Leadership(B, 2_000, 0);
+        b.heard(A, 100 * MS);
+        assertThat(b.leader(true, 200 * MS)).as("the eldest leads, even on a node with the whole fleet").isEqualTo(A);
+
+        b.left(A);
+        assertThat(b.leader(true, 300 * MS)).as("at once, not an alive period later").isEqualTo(B);
+        b.heard(A, 400 * MS); // a beat sent before the farewell, delivered after it
+        assertThat(b.leader(true, 500 * MS)).isEqualTo(B);
+    }
+
+    @Test
+    void aFarewellAloneDoesNotEndTheListeningOfANewInstanceOnASharedFleet() {
+        Leadership b = new Leadership(B, 2_000, 0);
+        b.left(A);
+        b.heard(A, 10 * MS);
+        // the instance that drives the fleet may still be to be heard: a farewell says nothing of it
+        assertThat(b.leader(false, 20 * MS)).isNull();
+        assertThat(b.leader(true, 20 * MS)).as("a node with the whole fleet").isEqualTo(B);
+    }
+
+    @Test
+    void itsOwnFarewellIsIgnored() {
+        Leadership a = new Leadership(A, 2_000, 0);
+        a.left(A);
+        assertThat(a.leader(true, 10 * MS)).isEqualTo(A);
+    }
 }
