@@ -47,6 +47,8 @@ class RollbackIntegrationTest extends BisTestBase {
             InstallException e = failure(installer.install(byType(ROBOT_UNLOAD)));
             assertThat(e.problem()).isEqualTo(Problem.ACTIVATION_TIMEOUT);
             assertThat(e.getMessage()).contains(ROBOT, "300 ms", "activation.timeout.ms");
+            assertThat(e.getMessage()).as("what Declarative Services says of the behaviour's components")
+                    .containsPattern("components not active: .*FleetLeadership missing reference bus");
         } finally {
             bus.start();
         }

@@ -91,8 +91,8 @@ final class Transaction {
             Bundle own = installed.stream().filter(i -> i.facts() == behaviour).findFirst().orElseThrow().bundle();
             if (activation.await(own, activationTimeoutMillis) == null) {
                 throw new InstallException(Problem.ACTIVATION_TIMEOUT, behaviour + " started, but no smart behaviour"
-                        + " of it was registered with the event bus within " + activationTimeoutMillis + " ms (its"
-                        + " components may miss a service or configuration: see 'scr:info' in the shell); raise"
+                        + " of it was registered with the event bus within " + activationTimeoutMillis + " ms ("
+                        + ComponentStates.of(context, own) + "; 'scr:info' in the shell says more); raise"
                         + " activation.timeout.ms of eu.brain.iot.bis if the node is merely slow");
             }
             return new Result(own, installed, reused(resolution));
