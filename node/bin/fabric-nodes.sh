@@ -5,12 +5,14 @@
 #
 #   ./fabric-node --nodes=3                 the embedded broker on 127.0.0.1:1883 and node1..node3, REST on
 #                                           127.0.0.1:8181..8183; runs until Ctrl-C (or SIGTERM), which stops them all
-#   ./fabric-node --nodes=3 --fleet         the same, and the simulated fleet (robot-sim) beside node1, whose edge
-#                                           polls it (--fleet-port=N as for one node)
+#   ./fabric-node --nodes=3 --fleet         the same, and the simulated fleet (robot-sim, started by node1's
+#                                           ./fabric-node; --fleet-port=N as for one node), shared by the nodes: each
+#                                           edge polls its share of the robots (share=K/N, the doors on node1), held
+#                                           by a lease that the others take over when the node dies
 #   ./fabric-node --nodes=2 --broker=tcp://127.0.0.1:1883   the nodes join that broker; none is started here
 #   ./fabric-node --broker=URI              one node joined to that broker, with its interactive shell
 #
-# Options (besides those of ./fabric-node, passed on to every node: -D..., -X..., --rebuild):
+# Options (besides those of ./fabric-node: -D... and -X... passed on to every node; --rebuild, the node built once):
 #   --nodes=N           how many nodes, 1..20 (default 1)
 #   --broker=URI        the broker the nodes join (tcp://HOST:PORT); without it the embedded broker starts here
 #   --broker-port=N     the embedded broker's port (default 1883)
@@ -40,7 +42,6 @@ max_nodes=20
 ready_timeout_s=180
 join_timeout_s=60
 reach_grace_s=10
-no_fleet_port=9 # the edge of a node without the fleet polls here: the discard port, which a usual machine does not serve
 
 nodes=1
 nodes_given=false
@@ -54,6 +55,7 @@ shell=true
 fleet=false
 fleet_port=8090
 node_args=()
+rebuild=false
 
 die() { echo "fabric-nodes: $*" >&2; exit 2; }
 port_arg() { # port_arg <flag> <value>: the value when it is a port 1..65535, else a usage error
@@ -94,7 +96,8 @@ for arg in "$@"; do
     --no-shell) shell=false ;;
     --fleet) fleet=true ;;
     --fleet-port=*) fleet=true; fleet_port="$(port_arg --fleet-port "${arg#--fleet-port=}")" ;;
-    --rebuild|-D*|-X*) node_args+=("$arg") ;;
+    --rebuild) rebuild=true ;;
+    -D*|-X*) node_args+=("$arg") ;;
     --check) die "--check starts one node: use ./fabric-node --check without --nodes/--broker" ;;
     -h|--help) sed -n '2,/^[^#]/{/^#/!q;s/^# \{0,1\}//;p}' "$0"; exit 0 ;;
     --nodes|--broker|--broker-port|--fabric|--state|--http-port|--name|--fleet-port)
@@ -135,6 +138,21 @@ configure_node() {
   name="$(node_name "$1")"; dir="$state_dir/$name/config"
   mkdir -p "$dir"
   find "$root/node/config" -maxdepth 1 -type f \( -name '*.cfg' -o -name '*.config' \) -exec cp {} "$dir"/ \;
+  if $fleet && (( nodes > 1 )); then
+    cat >"$dir/eu.brain.iot.edge.cfg" <<EOF
+# Written by node/bin/fabric-nodes.sh at every start: this node's share of the fleet, leased (edge/README.md).
+share=$1/$nodes
+share.leased=true
+doors.owner=1
+EOF
+    cat >"$dir/eu.brain.iot.federation.lease.cfg" <<EOF
+# Written by node/bin/fabric-nodes.sh at every start: the device leases, their defaults (federation/README.md).
+EOF
+  else # a share written at an earlier start with --fleet goes; a file of the user's stays
+    for f in "$dir/eu.brain.iot.edge.cfg" "$dir/eu.brain.iot.federation.lease.cfg"; do
+      if head -n 1 "$f" 2>/dev/null | grep -q '^# Written by node/bin/fabric-nodes.sh'; then rm -f "$f"; fi
+    done
+  fi
   cat >"$dir/eu.brain.iot.federation.cfg" <<EOF
 # Written by node/bin/fabric-nodes.sh at every start: this node's membership in the fabric.
 broker.uri=$2
@@ -159,9 +177,9 @@ node_command() {
   cmd+=("-Dfelix.fileinstall.dir=$state_dir/$name/config")
   if $fleet; then
     if (( k == 1 )); then
-      cmd+=("--fleet-port=$fleet_port")
-    else # the fleet is node1's: the others' edges own no robots (port 9, discard, where nothing answers)
-      cmd+=("-Deu.brain.iot.edge.fleet.url=http://127.0.0.1:$no_fleet_port/")
+      cmd+=("--fleet-port=$fleet_port") # node1's ./fabric-node starts robot-sim
+    else
+      cmd+=("-Deu.brain.iot.edge.fleet.url=http://127.0.0.1:$fleet_port/")
     fi
   fi
   cmd+=(${node_args[@]+"${node_args[@]}"})
@@ -206,6 +224,12 @@ trap 'exit 130' INT
 trap 'exit 143' TERM
 trap 'exit 129' HUP
 
+# The node (and robot-sim) built first, once, its progress shown: a node's ready time never includes a build.
+build_args=(--build-only)
+$rebuild && build_args+=(--rebuild)
+$fleet && build_args+=(--fleet)
+"$root/fabric-node" "${build_args[@]}" || { echo "fabric-nodes: the node's build failed (above)" >&2; exit 1; }
+
 if [[ -z $broker_uri ]]; then
   if (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
     echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
@@ -247,7 +271,8 @@ if (( nodes == 1 )) && $shell; then
 fi
 
 # --- the nodes, in the background ------------------------------------------------------------------------------
-# node1 first: ./fabric-node builds the node when its jar is stale, once; then the others at once.
+# All at once (built above), so that each takes its own share of a shared fleet within the device leases' join
+# grace (federation/README.md, "Device leases"); with --fleet node1's ./fabric-node starts robot-sim.
 start_node() {
   local name log
   name="$(node_name "$1")"; log="$state_dir/$name/node.log"
@@ -255,11 +280,9 @@ start_node() {
   "${cmd[@]}" --no-shell >"$log" 2>&1 </dev/null &
   node_pids+=($!)
 }
-start_node 1
-await_line "${node_pids[0]}" "$state_dir/$(node_name 1)/node.log" "fabric node ready in" "$(node_name 1)"
-for k in $(seq 2 "$nodes"); do start_node "$k"; done
-for k in $(seq 2 "$nodes"); do
-  await_line "${node_pids[k - 1]}" "$state_dir/node$k/node.log" "fabric node ready in" "node$k"
+for k in $(seq 1 "$nodes"); do start_node "$k"; done
+for k in $(seq 1 "$nodes"); do
+  await_line "${node_pids[k - 1]}" "$state_dir/$(node_name "$k")/node.log" "fabric node ready in" "$(node_name "$k")"
 done
 
 # joined: each node's log says it joined, or why it did not: at once when it does not join at all (its key), after

@@ -1,0 +1,113 @@
+package eu.brain.iot.node;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.io.IOException;
+import java.net.URI;
+import java.net.http.HttpClient;
+import java.net.http.HttpRequest;
+import java.net.http.HttpResponse;
+import java.nio.file.Files;
+import java.nio.file.Path;
+import java.nio.file.attribute.PosixFilePermissions;
+import java.time.Duration;
+import java.util.List;
+import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
+
+import org.junit.jupiter.api.Test;
+import org.junit.jupiter.api.io.TempDir;
+
+/**
+ * The README's {@code ./fabric-node --nodes=2 --fleet}, as a user runs it (the built jars; a {@code mvn} on the PATH
+ * that fails, so that no build runs inside the test): the embedded broker, two nodes and robot-sim; each node's edge
+ * owns its share of the robots, and robot-sim's ground truth shows each robot commanded by the node that owns it
+ * (robot2 by node1, robot1 and robot3 by node2: node K owns the robots whose number is K-1 modulo 2); SIGTERM
+ * stops everything, saying so.
+ */
+class FabricOfNodesScriptTest {
+
+    private static final Path SCRIPT = Path.of("..", "fabric-node").toAbsolutePath().normalize();
+    private static final Duration START = Duration.ofMinutes(4);
+    private static final Pattern ORIGIN = Pattern.compile("\"(robot\\d+)\":\\{\"node\":\"([^\"]+)\"");
+
+    @TempDir
+    Path dir;
+
+    @Test
+    void twoNodesShareTheFleetAndEachRobotIsCommandedByTheNodeThatOwnsIt() throws Exception {
+        Path bin = Files.createDirectories(dir.resolve("bin"));
+        Path mvn = bin.resolve("mvn");
+        Files.writeString(mvn, "#!/bin/sh\necho 'mvn must not run here: the jars are built' >&2\nexit 3\n");
+        Files.setPosixFilePermissions(mvn, PosixFilePermissions.fromString("rwxr-xr-x"));
+        int http = twoFreePorts();
+        int fleet = NodeProcess.freePort();
+        int broker = NodeProcess.freePort();
+        Path out = dir.resolve("out.txt");
+        ProcessBuilder builder = new ProcessBuilder("bash", SCRIPT.toString(), "--nodes=2", "--fleet",
+                "--state=" + dir.resolve("fabric"), "--http-port=" + http, "--fleet-port=" + fleet,
+                "--broker-port=" + broker).redirectErrorStream(true).redirectOutput(out.toFile())
+                .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
+        builder.environment().put("PATH", bin + ":" + System.getenv("PATH"));
+        Process fabric = builder.start();
+        try {
+            await("the fabric ready").atMost(START).pollInterval(Duration.ofMillis(200))
+                    .failFast("the script ended", () -> !fabric.isAlive())
+                    .until(() -> Files.readString(out).contains("ready:"));
+            assertThat(Files.readString(dir.resolve("fabric/node2/config/eu.brain.iot.edge.cfg")))
+                    .contains("share=2/2", "share.leased=true");
+
+            HttpClient client = HttpClient.newHttpClient();
+            URI world = URI.create("http://127.0.0.1:" + fleet + "/world");
+            List<String> owners = List.of("robot1 node2", "robot2 node1", "robot3 node2");
+            await("every robot commanded, each by its owner").atMost(START).pollInterval(Duration.ofMillis(500))
+                    .failFast("the script ended", () -> !fabric.isAlive())
+                    .until(() -> commanders(client, world), c -> c.size() == 3 && c.containsAll(owners));
+            assertThat(Files.readString(dir.resolve("fabric/node2/node.log")))
+                    .contains("for node node2, its share: 2/2");
+        } finally {
+            fabric.destroy(); // SIGTERM to the script: it stops the nodes, robot-sim and the broker
+            boolean ended = fabric.waitFor(60, TimeUnit.SECONDS);
+            if (!ended) {
+                fabric.destroyForcibly();
+            }
+            assertThat(ended).as(Files.readString(out)).isTrue();
+        }
+        assertThat(fabric.exitValue()).isEqualTo(143);
+        assertThat(Files.readString(out)).contains("fabric-nodes: stopping 2 node(s) and the broker",
+                "fabric-nodes: stopped").doesNotContain("mvn must not run");
+    }
+
+    /** Per robot commanded so far, "robotN nodeK": the last node that commanded it (robot-sim's ground truth). */
+    private static List<String> commanders(HttpClient client, URI world) throws IOException, InterruptedException {
+        String body = client.send(HttpRequest.newBuilder(world).timeout(Duration.ofSeconds(5)).build(),
+                HttpResponse.BodyHandlers.ofString()).body();
+        int origins = body.indexOf("\"commandOrigins\"");
+        List<String> found = new java.util.ArrayList<>();
+        if (origins >= 0) {
+            Matcher m = ORIGIN.matcher(body.substring(origins));
+            while (m.find()) {
+                found.add(m.group(1) + " " + m.group(2));
+            }
+        }
+        return found;
+    }
+
+    /** A port N free now with N+1 free too (node K's REST port is N+K-1). */
+    private static int twoFreePorts() throws IOException {
+        for (int tries = 0; tries < 50; tries++) {
+            int port = NodeProcess.freePort();
+            if (port < 65535) {
+                try (java.net.ServerSocket next = new java.net.ServerSocket(port + 1, 1,
+                        java.net.InetAddress.getLoopbackAddress())) {
+                    return port;
+                } catch (IOException taken) {
+                    // try another
+                }
+            }
+        }
+        throw new IOException("no two free consecutive ports on 127.0.0.1");
+    }
+}
