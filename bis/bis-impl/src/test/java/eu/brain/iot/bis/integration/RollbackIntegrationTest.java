@@ -48,7 +48,8 @@ class RollbackIntegrationTest extends BisTestBase {
             assertThat(e.problem()).isEqualTo(Problem.ACTIVATION_TIMEOUT);
             assertThat(e.getMessage()).contains(ROBOT, "300 ms", "activation.timeout.ms");
             assertThat(e.getMessage()).as("what Declarative Services says of the behaviour's components")
-                    .containsPattern("components not active: .*FleetLeadership missing reference bus");
+                    .containsPattern("components not active: .*FleetLeadership missing reference bus")
+                    .contains("the bundle registered no smart behaviour");
         } finally {
             bus.start();
         }

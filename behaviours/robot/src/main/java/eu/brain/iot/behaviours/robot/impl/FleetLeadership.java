@@ -85,7 +85,12 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         }
         RobotBehaviourAlive farewell = beatOf(rule.self());
         farewell.leaving = true;
-        bus.tryDeliver(farewell);
+        try {
+            bus.tryDeliver(farewell);
+        } catch (RuntimeException e) { // the bus going away too (the node stops): the others wait an alive period
+            LOG.log(System.Logger.Level.INFO, "robot fleet leadership: no farewell sent ({0}); the other instances"
+                    + " take over when they stop hearing this one", e.toString());
+        }
     }
 
     /** @return whether this instance drives the fleet now */

@@ -73,6 +73,26 @@ final class Activation {
         }
     }
 
+    /**
+     * @return for a message, what stands between the bundle and the bus now: no smart behaviour registered, or those
+     *         registered that the bus does not list (its statistics)
+     */
+    String missing(Bundle bundle) {
+        List<Long> ids = registered(bundle);
+        if (ids.isEmpty()) {
+            return "the bundle registered no smart behaviour";
+        }
+        EventBusStatistics bus = statistics.get();
+        if (bus == null) {
+            return "the bundle registered smart behaviours " + ids;
+        }
+        List<Long> known = new ArrayList<>();
+        bus.consumers().forEach(c -> known.add(c.serviceId));
+        List<Long> unknown = ids.stream().filter(id -> !known.contains(id)).toList();
+        return "the bundle registered smart behaviours " + ids + (unknown.isEmpty() ? ", all listed by the bus"
+                : ", of which the bus does not list " + unknown);
+    }
+
     /** @return whether the bundle has registered smart behaviours now */
     static boolean hasBehaviours(Bundle bundle) {
         return !registered(bundle).isEmpty();

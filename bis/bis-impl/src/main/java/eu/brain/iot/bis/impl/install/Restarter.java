@@ -66,7 +66,8 @@ final class Restarter {
         if (activation.await(own, activationTimeoutMillis) == null) {
             throw new InstallException(Problem.ACTIVATION_TIMEOUT, record.symbolicName() + " was started again, but"
                     + " no smart behaviour of it was registered with the bus within " + activationTimeoutMillis
-                    + " ms (" + ComponentStates.of(context, own) + "; 'scr:info' in the shell says more)");
+                    + " ms (" + activation.missing(own) + "; " + ComponentStates.of(context, own) + "; 'scr:info' in the"
+                    + " shell says more)");
         }
         info.accept("restarted " + record.symbolicName() + " " + record.version());
         return true;

@@ -92,8 +92,9 @@ final class Transaction {
             if (activation.await(own, activationTimeoutMillis) == null) {
                 throw new InstallException(Problem.ACTIVATION_TIMEOUT, behaviour + " started, but no smart behaviour"
                         + " of it was registered with the event bus within " + activationTimeoutMillis + " ms ("
-                        + ComponentStates.of(context, own) + "; 'scr:info' in the shell says more); raise"
-                        + " activation.timeout.ms of eu.brain.iot.bis if the node is merely slow");
+                        + activation.missing(own) + "; " + ComponentStates.of(context, own) + "; 'scr:info' in"
+                        + " the shell says more); raise activation.timeout.ms of eu.brain.iot.bis if the node is"
+                        + " merely slow");
             }
             return new Result(own, installed, reused(resolution));
         } catch (InstallException | InterruptedException | RuntimeException e) {
