@@ -111,7 +111,7 @@ class RemoteInstallTest extends FabricTestBase {
 
     /**
      * Both nodes offer the behaviour with the same load; the held events name a robot that node b's edge owns: b
-     * installs it, though a asks and has the lower name (either decides when the event names no device).
+     * installs it, though a asks and has the lower name (which decides when the event names no device).
      */
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
