@@ -317,7 +317,7 @@ final class FabricInstaller implements BundleInstaller {
         if (bid.deadline != null) {
             bid.deadline.cancel(false);
         }
-        Offer chosen = InstallChoice.choose(bid.offers.values());
+        Offer chosen = InstallChoice.choose(bid.offers.values(), self());
         if (chosen == null) {
             bid.answer.resolve(Departed.candidates(nodes.get(), bid.types));
             return;
@@ -335,8 +335,8 @@ final class FabricInstaller implements BundleInstaller {
         bid.answer.resolve(candidates);
     }
 
-    private static List<String> offersOf(Bid bid) {
-        return bid.offers.values().stream().filter(Offer::offers).sorted(InstallChoice.ORDER)
+    private List<String> offersOf(Bid bid) {
+        return bid.offers.values().stream().filter(Offer::offers).sorted(InstallChoice.order(self()))
                 .map(o -> o.node() + " owns " + o.owns() + " load " + o.load()).toList();
     }
 

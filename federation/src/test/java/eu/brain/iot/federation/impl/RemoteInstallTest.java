@@ -110,8 +110,9 @@ class RemoteInstallTest extends FabricTestBase {
     }
 
     /**
-     * Both nodes offer the behaviour with the same load; the held events name a robot that node b's edge owns: b
-     * installs it, though a asks and has the lower name (which decides when the event names no device).
+     * Three nodes offer the behaviour with the same load; the held events name a robot that node b's edge owns: b
+     * installs it, though a2 has the lower name of the nodes other than a, which asks (the choice when the event names
+     * no device).
      */
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
@@ -123,13 +124,18 @@ class RemoteInstallTest extends FabricTestBase {
         TestNode[] bRef = new TestNode[1];
         FakeInstaller atA = offering(aRef, onA);
         FakeInstaller atB = offering(bRef, onB);
+        Recorder onA2 = new Recorder();
+        TestNode[] a2Ref = new TestNode[1];
+        FakeInstaller atA2 = offering(a2Ref, onA2);
         aRef[0] = node("a", atA);
         bRef[0] = node("b", atB);
+        a2Ref[0] = node("a2", atA2);
         TestNode a = aRef[0];
         ((FabricInstaller) bRef[0].fabric.installer()).ownedDevices("robot2"::equals);
-        awaitOnline(a, bRef[0]);
-        assertThat(a.fabric.installer().find(List.of(MOVED)).getValue()).as("no device named: the lower name")
-                .extracting(cand -> cand.node).containsOnly("a");
+        awaitOnline(a, bRef[0], a2Ref[0]);
+        assertThat(a.fabric.installer().find(List.of(MOVED)).getValue())
+                .as("no device named: not the node that asks, then the lower name").extracting(cand -> cand.node)
+                .containsOnly("a2");
 
         MiniBms bms = new MiniBms(a.fabric.installer(), MOVED); // asks with the first event's fields, from the bus
         a.bus.policy(bms);
@@ -144,6 +150,7 @@ class RemoteInstallTest extends FabricTestBase {
         assertThat(onB.seqs()).containsExactlyElementsOf(LongStream.rangeClosed(1, held).boxed().toList());
         assertThat(atB.installs).hasSize(1);
         assertThat(atA.installs).isEmpty();
+        assertThat(atA2.installs).isEmpty();
         assertThat(onA.got).isEmpty();
         assertThat(a.log).anyMatch(l -> l.contains("node b installs " + RECORDER + " for events of " + MOVED
                 + " naming [robot2] (owns [robot2], load 0"));
