@@ -293,14 +293,21 @@ final class FabricInstaller implements BundleInstaller {
 
     /**
      * The bid's deadline: decided among the answers in, when one offers a candidate and, for an event that names
-     * devices, the offers in own every one of them; else, while nodes are still to answer (a node slower than
-     * {@code install.bid.ms}, e.g. under load), they are waited for until {@link #NO_OFFER_WAIT} deadlines have
-     * passed: deciding without them would give the event up for nothing, or put its behaviour away from its devices.
+     * devices, the offers in own every one of them, and when the only offer in is this node's own, it owns them all;
+     * else, while nodes are still to answer (a node slower than {@code install.bid.ms}, e.g. under load), they are
+     * waited for until {@link #NO_OFFER_WAIT} deadlines have passed: deciding without them would give the event up for
+     * nothing, put its behaviour away from its devices, or put it beside the node that asked though another offers it
+     * ({@link InstallChoice}).
      */
     private void deadline(Bid bid) {
         Set<String> owned = new HashSet<>();
         bid.offers.values().stream().filter(Offer::offers).forEach(o -> owned.addAll(o.owns()));
-        boolean offered = bid.offers.values().stream().anyMatch(Offer::offers) && owned.containsAll(bid.devices);
+        boolean others = bid.offers.values().stream().anyMatch(o -> o.offers() && !o.node().equals(self()));
+        Offer own = bid.offers.get(self());
+        boolean ownWins = own != null && own.offers() && !bid.devices.isEmpty()
+                && own.owns().containsAll(bid.devices);
+        boolean offered = bid.offers.values().stream().anyMatch(Offer::offers) && owned.containsAll(bid.devices)
+                && (others || ownWins);
         if (offered || bid.waiting.isEmpty() || bid.extended) {
             decide(bid);
             return;

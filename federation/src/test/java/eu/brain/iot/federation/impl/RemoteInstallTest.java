@@ -181,6 +181,31 @@ class RemoteInstallTest extends FabricTestBase {
         assertThat(found.timeout(10_000).getValue()).extracting(cand -> cand.node).containsOnly("b");
     }
 
+    /**
+     * For an event that names no device, the asking node's own offer alone is not the choice while another node that
+     * may offer the behaviour is still to answer: b, answering late, installs it (beside a, which published the event,
+     * the behaviour would die with it).
+     */
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void anotherNodeThatOffersIsWaitedForWhenItAnswersLateAndTheEventNamesNoDevice(Broker.Kind kind)
+            throws Exception {
+        startBroker(kind);
+        TestNode[] aRef = new TestNode[1];
+        TestNode[] bRef = new TestNode[1];
+        FakeInstaller atB = offering(bRef, new Recorder());
+        aRef[0] = node("a", offering(aRef, new Recorder()));
+        bRef[0] = node("b", atB);
+        awaitOnline(aRef[0], bRef[0]);
+        Deferred<List<BehaviourCandidate>> slow = new Deferred<>();
+        atB.findAnswer = slow.getPromise();
+        Promise<List<BehaviourCandidate>> found = aRef[0].fabric.installer().find(List.of(MOVED), Map.of());
+        // b's installer answers 400 ms after the question, later than install.bid.ms (100 ms)
+        CompletableFuture.delayedExecutor(400, TimeUnit.MILLISECONDS)
+                .execute(() -> slow.resolve(List.of(FakeInstaller.candidate(RECORDER, MOVED))));
+        assertThat(found.timeout(10_000).getValue()).extracting(cand -> cand.node).containsOnly("b");
+    }
+
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
     void theChosenNodeGoingOfflineMidInstallFailsTheInstallNamingIt(Broker.Kind kind) throws Exception {
