@@ -14,11 +14,11 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
-import java.util.regex.Matcher;
-import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
+
+import com.fasterxml.jackson.databind.ObjectMapper;
 
 /**
  * The README's {@code ./fabric-node --nodes=2 --fleet}, as a user runs it (the built jars; a {@code mvn} on the PATH
@@ -31,7 +31,7 @@ class FabricOfNodesScriptTest {
 
     private static final Path SCRIPT = Path.of("..", "fabric-node").toAbsolutePath().normalize();
     private static final Duration START = Duration.ofMinutes(4);
-    private static final Pattern ORIGIN = Pattern.compile("\"(robot\\d+)\":\\{\"node\":\"([^\"]+)\"");
+    private static final ObjectMapper JSON = new ObjectMapper();
 
     @TempDir
     Path dir;
@@ -80,18 +80,16 @@ class FabricOfNodesScriptTest {
                 "fabric-nodes: stopped").doesNotContain("mvn must not run");
     }
 
-    /** Per robot commanded so far, "robotN nodeK": the last node that commanded it (robot-sim's ground truth). */
+    /**
+     * Per robot commanded so far, "robotN nodeK": the last node that commanded it (robot-sim's ground truth,
+     * {@code commandOrigins.robots} of {@code GET /world}).
+     */
     private static List<String> commanders(HttpClient client, URI world) throws IOException, InterruptedException {
         String body = client.send(HttpRequest.newBuilder(world).timeout(Duration.ofSeconds(5)).build(),
                 HttpResponse.BodyHandlers.ofString()).body();
-        int origins = body.indexOf("\"commandOrigins\"");
         List<String> found = new java.util.ArrayList<>();
-        if (origins >= 0) {
-            Matcher m = ORIGIN.matcher(body.substring(origins));
-            while (m.find()) {
-                found.add(m.group(1) + " " + m.group(2));
-            }
-        }
+        JSON.readTree(body).path("commandOrigins").path("robots").properties()
+                .forEach(e -> found.add(e.getKey() + " " + e.getValue().path("node").asText()));
         return found;
     }
 

@@ -18,11 +18,11 @@ final class BrokerReach {
     /** How long the broker may take to answer, every attempt included. */
     static final Duration TIMEOUT = Duration.ofSeconds(3);
 
-    private BrokerReach() {
-    }
-
     /** Pause between two attempts while the broker refuses (one started with the run may not listen yet). */
     private static final long RETRY_MILLIS = 100;
+
+    private BrokerReach() {
+    }
 
     /** @throws IOException saying which broker does not answer, why, and what to do */
     static void check(String brokerUri) throws IOException, InterruptedException {

@@ -82,12 +82,10 @@ final class Activation {
         if (ids.isEmpty()) {
             return "the bundle registered no smart behaviour";
         }
-        EventBusStatistics bus = statistics.get();
-        if (bus == null) {
+        List<Long> known = listedByBus();
+        if (known == null) {
             return "the bundle registered smart behaviours " + ids;
         }
-        List<Long> known = new ArrayList<>();
-        bus.consumers().forEach(c -> known.add(c.serviceId));
         List<Long> unknown = ids.stream().filter(id -> !known.contains(id)).toList();
         return "the bundle registered smart behaviours " + ids + (unknown.isEmpty() ? ", all listed by the bus"
                 : ", of which the bus does not list " + unknown);
@@ -99,13 +97,19 @@ final class Activation {
     }
 
     private boolean knownToBus(List<Long> ids) {
+        List<Long> known = listedByBus();
+        return known == null || known.containsAll(ids);
+    }
+
+    /** @return the service ids of the consumers the bus lists, or null when it offers no statistics */
+    private List<Long> listedByBus() {
         EventBusStatistics bus = statistics.get();
         if (bus == null) {
-            return true;
+            return null;
         }
         List<Long> known = new ArrayList<>();
         bus.consumers().forEach(c -> known.add(c.serviceId));
-        return known.containsAll(ids);
+        return known;
     }
 
     private static List<Long> registered(Bundle bundle) {
