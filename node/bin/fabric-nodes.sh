@@ -119,6 +119,14 @@ if [[ $broker_uri =~ ^[a-z]+://([^/:]+):([0-9]+) ]]; then
     exit 1
   }
 fi
+# The embedded broker's port free, checked before anything is made or built
+# (a first build takes minutes).
+if [[ -z $broker_uri ]] && (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
+  echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
+    "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
+  exit 1
+fi
+
 mkdir -p "$state_dir"
 state_dir="$(cd "$state_dir" && pwd)"
 
@@ -231,11 +239,6 @@ $fleet && build_args+=(--fleet)
 "$root/fabric-node" "${build_args[@]}" || { echo "fabric-nodes: the node's build failed (above)" >&2; exit 1; }
 
 if [[ -z $broker_uri ]]; then
-  if (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
-    echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
-      "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
-    exit 1
-  fi
   newer=
   [[ -f $broker_jar ]] && newer="$(find "$root/broker/src/main" "$root/broker/pom.xml" "$root/pom.xml" \
     -newer "$broker_jar" -type f -print -quit)"

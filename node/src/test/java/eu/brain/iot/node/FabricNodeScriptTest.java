@@ -132,6 +132,15 @@ class FabricNodeScriptTest {
         assertThat(nobody.output).contains("nothing answers at 127.0.0.1:" + closed + " (--broker=tcp://127.0.0.1:"
                 + closed + ") within 3 s: start the broker there, or leave --broker out for the embedded one");
         assertThat(state).as("nothing made, no key").doesNotExist();
+
+        try (java.net.ServerSocket taken = new java.net.ServerSocket(0, 1,
+                java.net.InetAddress.getLoopbackAddress())) {
+            Result busy = run("--nodes=2", "--broker-port=" + taken.getLocalPort(), "--state=" + state);
+            assertThat(busy.code).isEqualTo(1);
+            assertThat(busy.output).contains("port " + taken.getLocalPort() + " of 127.0.0.1 is taken")
+                    .doesNotContain("building");
+            assertThat(state).as("nothing made or built before the port is found taken").doesNotExist();
+        }
     }
 
     private void fakeMaven(int exitCode, String body) throws IOException {
