@@ -1,6 +1,7 @@
 package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.ArrayList;
+import java.util.Comparator;
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -56,6 +57,8 @@ final class Errands {
     private final Map<String, Integer> given = new HashMap<>();
     /** Docks an earlier run of this behaviour learnt ({@link DockBook}): given back to robots met out on the floor. */
     private final Map<String, Cell> remembered = new HashMap<>();
+    /** What the instance that drove the fleet before shared ({@link #inherit}), for robots not taken over yet. */
+    private ErrandHandover.Table handedOver = ErrandHandover.Table.EMPTY;
     /** The robots this table has taken over ({@link #adopt}): each once. */
     private final Set<String> adopted = new HashSet<>();
     /** Storage cells given to a cart being carried there. */
@@ -87,14 +90,15 @@ final class Errands {
      * the fleet works (stopped, then brought back by the BMS), the errands are rebuilt so that no robot is left
      * without one:
      * <ul>
-     * <li>carrying a cart: it carries it to storage (to the storage cell it is heading for when that is still free,
-     * else one is given as it goes);</li>
-     * <li>heading for, or standing on, a cart on the floor that no robot claimed: it goes for that cart;</li>
+     * <li>carrying a cart: it carries it to storage (to the storage cell the instance that drove the fleet before
+     * gave it ({@link #inherit}), else the one it is heading for, when still free; else one is given as it goes);</li>
+     * <li>going for a cart (as that instance said), heading for or standing on one, that no robot claimed: it goes
+     * for that cart;</li>
      * <li>anywhere else outside the docking area: it goes home.</li>
      * </ul>
-     * A robot first seen parked in the docking area has its dock there; one first seen elsewhere, or moving, gets
-     * the dock an earlier run learnt for it ({@link #remember}) when that is free, else a free docking cell
-     * ({@link #dockFor}).
+     * A robot's dock is the one that instance knew; else, first seen parked in the docking area, there; first seen
+     * elsewhere, or moving, the dock an earlier run learnt for it ({@link #remember}) when that is free, else a free
+     * docking cell ({@link #dockFor}).
      *
      * @param s      the robot now
      * @param carts  the carts now
@@ -108,7 +112,10 @@ final class Errands {
             seen(s, grid);
             return false;
         }
-        if (grid.area(s.cell()) == Grid.DOCKING && (s.idle() || !remembered.containsKey(robot))) {
+        Cell handedDock = handedOver.docks().get(robot);
+        if (handedDock != null && !docks.containsValue(handedDock)) {
+            docks.putIfAbsent(robot, handedDock); // the dock the fleet's driver before knew
+        } else if (grid.area(s.cell()) == Grid.DOCKING && (s.idle() || !remembered.containsKey(robot))) {
             docks.putIfAbsent(robot, s.cell()); // parked: at its dock (a fresh start)
         } else if (!docks.containsKey(robot)) {
             Cell dock = dockFor(robot, s.cell(), grid, robots);
@@ -120,28 +127,57 @@ final class Errands {
             return true;
         }
         Cell dock = docks.get(robot);
+        Errand before = handedOver.errands().get(robot);
+        given.merge(robot, handedOver.given().getOrDefault(robot, 0), Math::max);
         if (s.carrying()) {
-            Cell drop = !s.idle() && s.goal() != null && grid.area(s.goal()) == Grid.STORAGE
-                    && !drops.contains(s.goal())
-                    && carts.stream().noneMatch(c -> c.carriedBy() == null && c.cell().equals(s.goal()))
-                    ? s.goal() : null;
+            Cell kept = before != null && before.leg() == Leg.TO_STORAGE ? before.drop() : null;
+            Cell heading = !s.idle() ? s.goal() : null;
+            Cell drop = freeDrop(kept, carts, grid) ? kept : freeDrop(heading, carts, grid) ? heading : null;
             if (drop != null) {
                 drops.add(drop);
             }
             errands.put(robot, new Errand(robot, Leg.TO_STORAGE, s.cart(), null, drop, dock));
-            given.merge(robot, 1, Integer::sum);
+            given.merge(robot, before == null ? 1 : 0, Integer::sum);
             return true;
         }
         Cell target = !s.idle() && s.goal() != null ? s.goal() : s.cell();
+        String wanted = before != null && before.leg() == Leg.TO_CART ? before.cart() : null;
         Optional<CartState> cart = carts.stream()
-                .filter(c -> c.cell().equals(target) && waiting(c, grid) && !claimed(c.id())).findFirst();
+                .filter(c -> (c.id().equals(wanted) || c.cell().equals(target) && !handedToOther(robot, c.id()))
+                        && waiting(c, grid) && !claimed(c.id()))
+                .min(Comparator.comparing(c -> !c.id().equals(wanted))); // the cart it went for first
         if (cart.isPresent()) {
-            errands.put(robot, new Errand(robot, Leg.TO_CART, cart.get().id(), target, null, dock));
-            given.merge(robot, 1, Integer::sum);
+            errands.put(robot, new Errand(robot, Leg.TO_CART, cart.get().id(), cart.get().cell(), null, dock));
+            given.merge(robot, wanted == null ? 1 : 0, Integer::sum);
         } else if (grid.area(s.cell()) != Grid.DOCKING && dock != null) {
             errands.put(robot, new Errand(robot, Leg.TO_DOCK, null, null, null, dock));
         }
         return true;
+    }
+
+    /** @return whether the handover says another robot goes for the cart */
+    private boolean handedToOther(String robot, String cart) {
+        return handedOver.errands().values().stream()
+                .anyMatch(x -> x.leg() == Leg.TO_CART && cart.equals(x.cart()) && !x.robot().equals(robot));
+    }
+
+    /** @return whether a robot carrying a cart may put it down there: a storage cell no cart stands on or is given */
+    private boolean freeDrop(Cell c, List<CartState> carts, Grid grid) {
+        return c != null && grid.area(c) == Grid.STORAGE && !drops.contains(c)
+                && carts.stream().noneMatch(x -> x.carriedBy() == null && x.cell().equals(c));
+    }
+
+    /**
+     * What the instance that drove the fleet before this one shared ({@link ErrandHandover}): the robots this table
+     * takes over from now on continue their errands ({@link #adopt}) and keep their docks.
+     */
+    void inherit(ErrandHandover.Table table) {
+        handedOver = table;
+    }
+
+    /** @return this table as the instances standing by inherit it ({@link ErrandHandover}) */
+    String handover() {
+        return ErrandHandover.write(errands.values(), docks, given);
     }
 
     /** The dock of a robot first met out on the floor ({@link DockingWay#dockFor}). */

@@ -56,6 +56,8 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         return t;
     });
     private volatile boolean leads;
+    /** The errand table shared while this instance leads, and the leader's, heard while it stands by. */
+    private final ErrandHandover handover = new ErrandHandover();
     /** The leader last logged; under the lock. */
     private Leadership.Instance lastLeader;
 
@@ -93,6 +95,11 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         }
     }
 
+    /** @return the errand table this instance shares while it leads, and inherits when it takes over */
+    ErrandHandover handover() {
+        return handover;
+    }
+
     /** @return whether this instance drives the fleet now */
     public boolean leads() {
         return leads;
@@ -109,13 +116,17 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         } else {
             rule.heard(other, System.nanoTime());
         }
+        if (beat.errands != null && !beat.errands.isEmpty() && !leads && !other.id().equals(rule.self().id())) {
+            handover.heard(beat.errands);
+        }
     }
 
-    private static RobotBehaviourAlive beatOf(Leadership.Instance self) {
+    private RobotBehaviourAlive beatOf(Leadership.Instance self) {
         RobotBehaviourAlive alive = new RobotBehaviourAlive();
         alive.node = self.node();
         alive.instance = self.id();
         alive.startedMillis = self.startedMillis();
+        alive.errands = leads ? handover.shared() : null;
         return alive;
     }
 
@@ -145,6 +156,9 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
                         + " heard again: this one stops driving the fleet", leader.node());
             }
             lastLeader = leader;
+        }
+        if (leads && !now) {
+            handover.standBy();
         }
         leads = now;
         drive(now);

@@ -19,4 +19,9 @@ public class RobotBehaviourAlive extends BrainIoTEvent {
      * alive period after its last beat, and the next one drives the fleet without the robots standing that long.
      */
     public boolean leaving;
+    /**
+     * The instance that drives the fleet: its errand table ({@link ErrandHandover}'s text), so that the one that takes
+     * over continues the errands; null from an instance that stands by.
+     */
+    public String errands;
 }

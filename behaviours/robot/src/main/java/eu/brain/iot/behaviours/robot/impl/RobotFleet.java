@@ -90,11 +90,14 @@ public final class RobotFleet {
     static final String DOCK_BOOK = "docks.tsv";
     private final DockBook book;
     private Grid bookOf;
+    /** The errand table shared with the instances standing by, and the one inherited from the fleet's driver. */
+    private final ErrandHandover handover;
 
     @Activate
-    public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, RobotConfig config,
-            BundleContext context) {
+    public RobotFleet(@Reference DeviceModel model, @Reference EventBus bus, @Reference FleetLeadership leadership,
+            RobotConfig config, BundleContext context) {
         this.view = new FleetView(model);
+        this.handover = leadership.handover();
         File data = context == null ? null : context.getDataFile(DOCK_BOOK);
         this.book = new DockBook(data == null ? null : data.toPath());
         this.ledger = new CommandLedger(bus, "robot-behaviour-");
@@ -181,6 +184,10 @@ public final class RobotFleet {
         if (errands.knows(s.id())) {
             errands.seen(s, grid.get()); // every look at every robot: no read of the other robots and carts
             return;
+        }
+        ErrandHandover.Table inherited = handover.take(grid.get());
+        if (inherited != null) {
+            errands.inherit(inherited); // this instance takes the fleet over from the one that drove it
         }
         if (errands.adopt(s, view.carts(), grid.get(), view.robots())) {
             book.save(grid.get(), errands.docks());
@@ -428,6 +435,11 @@ public final class RobotFleet {
     /** An outcome arrived on the bus ({@link Refusals#outcome}). */
     void outcome(CommandOutcome o) {
         refusals.outcome(o);
+    }
+
+    /** @return the errand table shared with the instances standing by, and inherited from the fleet's driver */
+    ErrandHandover handover() {
+        return handover;
     }
 
     /** On the binding's look: a command left without an outcome counts as refused ({@link Refusals}). */

@@ -93,6 +93,72 @@ class FleetLeadershipTest {
         }
     }
 
+    /** A node that owns robot1 of a fleet of two. */
+    static final class SharedFleet implements DeviceOwnership {
+        private final WholeFleet one = new WholeFleet();
+
+        @Override
+        public String nodeName() {
+            return "node2";
+        }
+
+        @Override
+        public Set<String> owned() {
+            return one.owned();
+        }
+
+        @Override
+        public Set<String> share() {
+            return one.share();
+        }
+
+        @Override
+        public Set<String> fleet() {
+            return Set.of("robot1", "robot2");
+        }
+
+        @Override
+        public boolean owns(String deviceId) {
+            return one.owns(deviceId);
+        }
+
+        @Override
+        public Set<String> take(Set<String> deviceIds) {
+            return Set.of();
+        }
+
+        @Override
+        public Set<String> release(Set<String> deviceIds) {
+            return Set.of();
+        }
+    }
+
+    @Test
+    void theLeadersBeatsCarryItsErrandTableAndAStandbyKeepsItForItsTakeover() throws Exception {
+        Recorded bus = new Recorded();
+        FleetLeadership leader = new FleetLeadership(bus, new WholeFleet(), null);
+        Recorded standbyBus = new Recorded();
+        FleetLeadership standby = new FleetLeadership(standbyBus, new SharedFleet(), null);
+        try {
+            leader.handover().share(() -> "robot1 1,1 1 TO_DOCK - - -\n");
+            await().atMost(DEADLINE).until(() -> bus.beats().stream().anyMatch(b -> b.errands != null
+                    && !b.errands.isEmpty()));
+            RobotBehaviourAlive beat = bus.beats().stream().filter(b -> b.errands != null && !b.errands.isEmpty())
+                    .findFirst().orElseThrow();
+            assertThat(beat.errands).isEqualTo("robot1 1,1 1 TO_DOCK - - -\n");
+
+            assertThat(standby.leads()).as("listening for a driver").isFalse();
+            standby.notify(beat);
+            assertThat(standby.handover().take(ErrandHandoverTest.MAP).errands().get("robot1").leg())
+                    .isEqualTo(Errands.Leg.TO_DOCK);
+            assertThat(standbyBus.beats()).as("a standby shares no table").isNotEmpty()
+                    .allMatch(b -> b.errands == null);
+        } finally {
+            leader.deactivate();
+            standby.deactivate();
+        }
+    }
+
     @Test
     void anInstanceThatStopsSaysSoAfterItsLastBeat() throws Exception {
         Recorded bus = new Recorded();
