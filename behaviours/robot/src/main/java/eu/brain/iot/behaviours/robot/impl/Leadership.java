@@ -13,7 +13,10 @@ import java.util.Set;
  * first (then the lowest instance id) leads. An instance on a node that has the whole fleet leads at once; on a
  * fleet shared between nodes it first listens for {@link #LISTEN_PERIODS} alive periods, so that an instance
  * starting beside one that already drives the fleet never drives it too: the other's beats reach it only once its
- * own interest in them has crossed the fabric, which one alive period did not always cover. When the leader stops
+ * own interest in them has crossed the fabric, which one alive period did not always cover. Having heard another
+ * instance it still listens for one alive period from its start: instances that start together hear each other at
+ * different times (each one's interest crosses the fabric to each other node on its own), and one that had heard
+ * only younger ones would drive the fleet beside the eldest until the eldest's beats reached it. When the leader stops
  * beating (its node died), the next one leads after {@link #aliveMillis}, and takes the robots over as a behaviour
  * started again does; when it says it leaves ({@link #left}: its bundle stopped), at once. An instance that left is
  * not heard again: a beat it sent before it left may reach a listener after its farewell, or after the instance that
@@ -38,7 +41,7 @@ final class Leadership {
     private final Instance self;
     private final long aliveMillis;
     private final long startedNanos;
-    /** Whether another instance was ever heard (its listening is then over). */
+    /** Whether another instance was ever heard (its listening then ends one alive period after its start). */
     private boolean heardAny;
     /** The other instances and when each was last heard (nanos). */
     private final Map<String, Heard> others = new HashMap<>();
@@ -61,7 +64,7 @@ final class Leadership {
     void heard(Instance other, long nowNanos) {
         if (!other.id().equals(self.id()) && !left.contains(other.id())) {
             others.put(other.id(), new Heard(other, nowNanos));
-            heardAny = true; // the fabric brings the others' beats here: no more listening
+            heardAny = true; // the fabric brings the others' beats here: one alive period of listening is enough
         }
     }
 
@@ -90,9 +93,9 @@ final class Leadership {
                 best = h.instance();
             }
         }
-        boolean listening = !heardAny && nowNanos - startedNanos < LISTEN_PERIODS * window;
-        if (best == self && !wholeFleetHere && others.isEmpty() && listening) {
-            return null; // still listening for an instance that drives the fleet already
+        boolean listening = nowNanos - startedNanos < (heardAny ? 1 : LISTEN_PERIODS) * window;
+        if (best == self && !wholeFleetHere && listening) {
+            return null; // still listening for an instance that drives the fleet already, or one that started earlier
         }
         return best;
     }

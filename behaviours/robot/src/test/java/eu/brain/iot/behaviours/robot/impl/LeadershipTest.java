@@ -33,8 +33,10 @@ class LeadershipTest {
         a.heard(B, 100 * MS);
         b.heard(A, 100 * MS);
 
-        assertThat(a.leader(false, 200 * MS)).isEqualTo(A);
         assertThat(b.leader(false, 200 * MS)).isEqualTo(A);
+        assertThat(a.leader(false, 200 * MS)).as("an elder one may still be to be heard").isNull();
+        a.heard(B, 1_900 * MS);
+        assertThat(a.leader(false, 2_001 * MS)).isEqualTo(A);
     }
 
     @Test
@@ -51,7 +53,8 @@ class LeadershipTest {
         Leadership a = new Leadership(A, 2_000, 0);
         a.heard(A, 0);
         a.heard(B, 0);
-        assertThat(a.leader(false, 10 * MS)).isEqualTo(A);
+        a.heard(B, 2_000 * MS);
+        assertThat(a.leader(false, 2_010 * MS)).isEqualTo(A);
     }
 
     @Test
