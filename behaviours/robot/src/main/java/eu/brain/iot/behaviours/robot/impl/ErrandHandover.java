@@ -2,6 +2,7 @@ package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.Collection;
 import java.util.HashMap;
+import java.util.HashSet;
 import java.util.Map;
 import java.util.Set;
 import java.util.TreeSet;
@@ -23,8 +24,8 @@ import eu.brain.iot.behaviours.warehouse.Grid;
  * whose cells are off the map, are left out (the robot is then taken over from the device model, as without a
  * handover).
  * <p>
- * Threads: the fleet's thread refreshes what this instance shares ({@link #share}) and takes what it inherits
- * ({@link #take}); the beat thread reads what is shared ({@link #shared}); the bus's thread records what the leader
+ * Threads: the fleet's thread refreshes what this instance shares ({@link #share}), takes what it inherits
+ * ({@link #take}) and ends its hold ({@link #holdEnded}); the beat thread reads what is shared ({@link #shared}); the bus's thread records what the leader
  * shared ({@link #heard}). Volatile fields.
  */
 final class ErrandHandover {
@@ -38,6 +39,24 @@ final class ErrandHandover {
     /** What a takeover continues: each robot's errand, dock and the carts it was given. */
     record Table(Map<String, Errands.Errand> errands, Map<String, Cell> docks, Map<String, Integer> given) {
         static final Table EMPTY = new Table(Map.of(), Map.of(), Map.of());
+
+        /**
+         * @param adopted the robots taken over already
+         * @return whether a robot not taken over yet went for the cart (it keeps it: its node died, and the node that
+         *         polls it next takes it over on its errand)
+         */
+        boolean holds(String cart, Set<String> adopted) {
+            return errands.values().stream().anyMatch(e -> e.leg() == Errands.Leg.TO_CART && cart.equals(e.cart())
+                    && !adopted.contains(e.robot()));
+        }
+
+        /** @return the storage cells given to robots not taken over yet that carry carts there */
+        Set<Cell> heldDrops(Set<String> adopted) {
+            Set<Cell> held = new HashSet<>();
+            errands.values().stream().filter(e -> e.leg() == Errands.Leg.TO_STORAGE && e.drop() != null
+                    && !adopted.contains(e.robot())).forEach(e -> held.add(e.drop()));
+            return held;
+        }
     }
 
     /** Wall time between two refreshes of what this instance shares: a beat's. */
@@ -48,6 +67,14 @@ final class ErrandHandover {
     private volatile long sharedAtNanos;
     /** What the instance that drives the fleet shared last, while this one stands by, until taken. */
     private volatile String heard;
+    /**
+     * Wall time for which the robots of a handover not taken over yet keep their carts and storage cells: their new
+     * owner polls them once the dead node's lease expired (2 s), about when this instance took the fleet over.
+     */
+    static final long HOLD_NANOS = 10_000_000_000L;
+    /** When the last handover was taken, while its hold runs; the fleet's thread only. */
+    private long holdFromNanos;
+    private boolean holding;
 
     /** The fleet's thread, at each look while it drives the fleet: the table is read again once per beat. */
     void share(Supplier<String> table) {
@@ -80,7 +107,18 @@ final class ErrandHandover {
             return null;
         }
         heard = null;
+        holding = true;
+        holdFromNanos = System.nanoTime();
         return read(text, grid);
+    }
+
+    /** @return true once, when the hold of the handover taken last ended ({@link #HOLD_NANOS}) */
+    boolean holdEnded(long nowNanos) {
+        if (!holding || nowNanos - holdFromNanos < HOLD_NANOS) {
+            return false;
+        }
+        holding = false;
+        return true;
     }
 
     /**

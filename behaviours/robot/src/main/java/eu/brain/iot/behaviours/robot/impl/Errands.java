@@ -143,8 +143,8 @@ final class Errands {
         Cell target = !s.idle() && s.goal() != null ? s.goal() : s.cell();
         String wanted = before != null && before.leg() == Leg.TO_CART ? before.cart() : null;
         Optional<CartState> cart = carts.stream()
-                .filter(c -> (c.id().equals(wanted) || c.cell().equals(target) && !handedToOther(robot, c.id()))
-                        && waiting(c, grid) && !claimed(c.id()))
+                .filter(c -> (c.id().equals(wanted) || c.cell().equals(target)) && waiting(c, grid)
+                        && !claimed(c.id()))
                 .min(Comparator.comparing(c -> !c.id().equals(wanted))); // the cart it went for first
         if (cart.isPresent()) {
             errands.put(robot, new Errand(robot, Leg.TO_CART, cart.get().id(), cart.get().cell(), null, dock));
@@ -155,12 +155,6 @@ final class Errands {
         return true;
     }
 
-    /** @return whether the handover says another robot goes for the cart */
-    private boolean handedToOther(String robot, String cart) {
-        return handedOver.errands().values().stream()
-                .anyMatch(x -> x.leg() == Leg.TO_CART && cart.equals(x.cart()) && !x.robot().equals(robot));
-    }
-
     /** @return whether a robot carrying a cart may put it down there: a storage cell no cart stands on or is given */
     private boolean freeDrop(Cell c, List<CartState> carts, Grid grid) {
         return c != null && grid.area(c) == Grid.STORAGE && !drops.contains(c)
@@ -169,7 +163,8 @@ final class Errands {
 
     /**
      * What the instance that drove the fleet before this one shared ({@link ErrandHandover}): the robots this table
-     * takes over from now on continue their errands ({@link #adopt}) and keep their docks.
+     * takes over from now on continue their errands ({@link #adopt}) and keep their docks; until then their carts and
+     * storage cells are kept for them (an empty table ends that).
      */
     void inherit(ErrandHandover.Table table) {
         handedOver = table;
@@ -349,6 +344,7 @@ final class Errands {
             drops.remove(e.drop()); // chosen again, with what the warehouse looks like now
         }
         Set<Cell> walls = new HashSet<>(drops); // storage cells given to carts, carried there or put down
+        walls.addAll(handedOver.heldDrops(adopted));
         carts.stream().filter(c -> c.carriedBy() == null).forEach(c -> walls.add(c.cell()));
         walls.remove(at); // the cart it lifts
         List<Cell> inFlight = errands.values().stream().filter(x -> x.leg() == Leg.TO_STORAGE && x.drop() != null
@@ -487,7 +483,7 @@ final class Errands {
 
     /** @return whether a robot has an errand for this cart */
     boolean claimed(String cart) {
-        return errands.values().stream().anyMatch(e -> cart.equals(e.cart()));
+        return errands.values().stream().anyMatch(e -> cart.equals(e.cart())) || handedOver.holds(cart, adopted);
     }
 
     /** A cart on the floor and not in storage waits for a robot. */

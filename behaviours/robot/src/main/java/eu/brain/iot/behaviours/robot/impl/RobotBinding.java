@@ -267,7 +267,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             for (RobotState s : fleet.view().robots()) {
                 evaluate(s.id());
             }
-            fleet.handover().share(fleet.errands()::handover); // for the instances standing by
+            leadership.handover().share(fleet.errands()::handover); // for the instances standing by
         } catch (RuntimeException e) {
             LOG.log(System.Logger.Level.WARNING, "robot binding: a look at the robots failed", e);
         }

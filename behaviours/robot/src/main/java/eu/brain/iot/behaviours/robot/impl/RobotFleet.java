@@ -181,6 +181,9 @@ public final class RobotFleet {
             bookOf = grid.get();
             errands.remember(book.load(grid.get()));
         }
+        if (handover.holdEnded(System.nanoTime())) {
+            errands.inherit(ErrandHandover.Table.EMPTY); // robots not polled since: their carts go back to the table
+        }
         if (errands.knows(s.id())) {
             errands.seen(s, grid.get()); // every look at every robot: no read of the other robots and carts
             return;
@@ -435,11 +438,6 @@ public final class RobotFleet {
     /** An outcome arrived on the bus ({@link Refusals#outcome}). */
     void outcome(CommandOutcome o) {
         refusals.outcome(o);
-    }
-
-    /** @return the errand table shared with the instances standing by, and inherited from the fleet's driver */
-    ErrandHandover handover() {
-        return handover;
     }
 
     /** On the binding's look: a command left without an outcome counts as refused ({@link Refusals}). */

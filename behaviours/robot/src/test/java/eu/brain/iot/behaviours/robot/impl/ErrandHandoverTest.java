@@ -157,6 +157,46 @@ class ErrandHandoverTest {
         assertThat(after.of("robot1").cart()).isEqualTo("cart1");
     }
 
+    @Test
+    void aRobotNotPolledYetKeepsItsCartFromOthersClaimsUntilTheHoldEnds() {
+        Errands after = new Errands(6);
+        after.inherit(ErrandHandover.read("robot1 1,1 1 TO_CART cart1 4,8 -\nrobot2 2,1 0 NONE - - -\n", MAP));
+        RobotState docked = robot("robot2", new Cell(2, 1), null, null, null);
+        List<CartState> carts = List.of(new CartState("cart1", new Cell(4, 8), null));
+        after.adopt(docked, carts, MAP, List.of(docked)); // robot1's node died: nobody polls it yet
+
+        assertThat(after.claimed("cart1")).isTrue();
+        assertThat(after.claim("robot2", docked.cell(), carts, MAP, List.of(docked))).isEmpty();
+
+        after.inherit(ErrandHandover.Table.EMPTY); // the hold ended: robot1 was not polled since
+        assertThat(after.claim("robot2", docked.cell(), carts, MAP, List.of(docked))).isPresent();
+    }
+
+    @Test
+    void theStorageCellOfACarrierNotPolledYetIsGivenToNoOtherCart() {
+        Cell only = new Cell(6, 3);
+        Errands after = new Errands(6);
+        after.inherit(ErrandHandover.read("robot1 1,1 1 TO_STORAGE cart1 4,8 6,3\n", MAP));
+        List<CartState> carts = List.of(new CartState("cart2", new Cell(5, 7), "robot2"));
+        after.adopt(robot("robot2", new Cell(5, 7), "cart2", "running", new Cell(5, 6)), carts, MAP, List.of());
+
+        Cell drop = after.lifted("robot2", new Cell(5, 7), carts, MAP).orElseThrow().drop();
+
+        assertThat(drop).isNotEqualTo(only);
+    }
+
+    @Test
+    void theHoldEndsOnceAfterItsTime() {
+        ErrandHandover handover = new ErrandHandover();
+        handover.heard("robot1 1,1 1 TO_DOCK - - -\n");
+        long taken = System.nanoTime();
+        handover.take(MAP);
+
+        assertThat(handover.holdEnded(taken)).isFalse();
+        assertThat(handover.holdEnded(taken + ErrandHandover.HOLD_NANOS + 1_000_000_000L)).isTrue();
+        assertThat(handover.holdEnded(taken + 2 * ErrandHandover.HOLD_NANOS)).as("once").isFalse();
+    }
+
     private static RobotState robot(String id, Cell cell, String cart, String missionState, Cell goal) {
         return new RobotState(id, cell, "N", MAP.area(cell), "running".equals(missionState), 0, cart,
                 missionState == null ? null : 1L, missionState == null ? null : "goto", missionState, goal, true);
