@@ -25,15 +25,17 @@
 #   --no-shell          one node: no interactive shell (several nodes never have one)
 #
 # Each node gets the configuration PID eu.brain.iot.federation (a .cfg file in DIR/nodeK/config, beside copies of
-# node/config's files): broker.uri, fabric.name, node.name, key.file, state.dir. The key file is created (32 random bytes,
-# base64, mode 600) when missing; every node of a fabric must be given the same one.
+# node/config's files): broker.uri, fabric.name, node.name, key.file, state.dir. The key file is created (32 random
+# bytes, base64, mode 600) when missing; every node of a fabric must be given the same one.
 #
-# A fabric of several nodes is "ready" once every node has joined it; a node that does not join (its key, a broker
-# that does not take it) stops them all, its log's reason shown. A broker given by URI must answer before any node
-# starts.
+# A fabric of several nodes is "ready" once every node has started (its levels up without problems: its REST API
+# listening) and joined it; a node that does not (its key, a broker that does not take it) stops them all, its log's
+# reason shown. Before anything is made or started, a broker given by URI must answer, and the embedded broker's port
+# and every node's REST port must be free.
 #
-# Exit code: 130 after Ctrl-C, 143 after SIGTERM (every node stopped), 1 when the broker or a node did not start or
-# join (its log is shown) or a node ended, 2 for a bad command line.
+# Exit code: 130 after Ctrl-C, 143 after SIGTERM (every node stopped), 1 when a port is taken, the broker or a node
+# did not start or join (its log is shown), or a node or the embedded broker ended (named, with its exit code),
+# 2 for a bad command line.
 set -euo pipefail
 
 root="$(cd "$(dirname "${BASH_SOURCE[0]}")/../.." && pwd)"
@@ -110,22 +112,40 @@ if [[ -n $single_name ]] && (( nodes > 1 )); then
 fi
 (( http_base + nodes - 1 <= 65535 )) || die "--http-port=$http_base leaves no port for node $nodes"
 $nodes_given || [[ -n $broker_uri ]] || die "give --nodes=N or --broker=URI"
-# a broker given by URI answers before anything is made or started
-if [[ $broker_uri =~ ^[a-z]+://([^/:]+):([0-9]+) ]]; then
-  host="${BASH_REMATCH[1]}" port="${BASH_REMATCH[2]}"
-  timeout 3 bash -c 'exec 3<>"/dev/tcp/$0/$1"' "$host" "$port" 2>/dev/null || {
-    echo "fabric-nodes: nothing answers at $host:$port (--broker=$broker_uri) within 3 s: start the broker there," \
-      "or leave --broker out for the embedded one" >&2
-    exit 1
-  }
+
+# node_name <k>: node K's name (its folder is $state_dir/<name>)
+node_name() { if [[ -n $single_name ]]; then echo "$single_name"; else echo "node$1"; fi; }
+
+# answers <host> <port>: whether a program accepts connections there (within 3 s). Checked before anything is made
+# or built (a first build takes minutes): a broker given by URI must answer; the ports this script has processes
+# listen on (the embedded broker's, each node's REST port) must not.
+answers() { timeout 3 bash -c 'exec 3<>"/dev/tcp/$0/$1"' "$1" "$2" 2>/dev/null; }
+
+if [[ $broker_uri =~ ^[a-z]+://([^/:]+):([0-9]+) ]] && ! answers "${BASH_REMATCH[1]}" "${BASH_REMATCH[2]}"; then
+  echo "fabric-nodes: nothing answers at ${BASH_REMATCH[1]}:${BASH_REMATCH[2]} (--broker=$broker_uri) within 3 s:" \
+    "start the broker there, or leave --broker out for the embedded one" >&2
+  exit 1
 fi
-# The embedded broker's port free, checked before anything is made or built
-# (a first build takes minutes).
-if [[ -z $broker_uri ]] && (exec 3<>"/dev/tcp/127.0.0.1/$broker_port") 2>/dev/null; then
+if [[ -z $broker_uri ]] && answers 127.0.0.1 "$broker_port"; then
   echo "fabric-nodes: port $broker_port of 127.0.0.1 is taken (a broker already running?): join that broker" \
     "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
   exit 1
 fi
+# every node's REST port (node K's is the --http-port plus K-1): a node on a taken one would run without its REST API
+# and dashboard, and the port would lead to another program's
+for k in $(seq 1 "$nodes"); do
+  port=$((http_base + k - 1))
+  if answers 127.0.0.1 "$port"; then
+    if (( nodes > 1 )); then
+      hint="choose other ports with --http-port=N (node K gets N+K-1; now N is $http_base)"
+    else
+      hint="choose another with --http-port=N"
+    fi
+    echo "fabric-nodes: port $port of 127.0.0.1, for $(node_name "$k")'s REST API and dashboard, is taken (another" \
+      "node or program listens there): $hint" >&2
+    exit 1
+  fi
+done
 
 mkdir -p "$state_dir"
 state_dir="$(cd "$state_dir" && pwd)"
@@ -136,9 +156,6 @@ if [[ ! -s $key_file ]]; then
   (umask 077 && head -c 32 /dev/urandom | base64 >"$key_file")
   echo "fabric-nodes: created the fabric's key $key_file (give every node of this fabric a copy)" >&2
 fi
-
-# node_name <k>: node K's name (its folder is $state_dir/<name>)
-node_name() { if [[ -n $single_name ]]; then echo "$single_name"; else echo "node$1"; fi; }
 
 # configure_node <k> <broker uri>: node K's configuration folder, node/config's files and the federation's PID
 configure_node() {
@@ -198,6 +215,8 @@ broker_pid=
 node_pids=()
 stop_all() {
   local pid
+  # a broker that ended already (kill -9) is not said to be stopped here
+  [[ -n $broker_pid ]] && ! kill -0 "$broker_pid" 2>/dev/null && { wait "$broker_pid" 2>/dev/null; broker_pid=; }
   if [[ ${#node_pids[@]} -gt 0 || -n $broker_pid ]]; then
     echo "fabric-nodes: stopping ${#node_pids[@]} node(s)$( [[ -n $broker_pid ]] && echo " and the broker")" >&2
   fi
@@ -231,6 +250,10 @@ trap stop_all EXIT
 trap 'exit 130' INT
 trap 'exit 143' TERM
 trap 'exit 129' HUP
+# SIGKILL "trapped" too: bash reports a background process killed by a signal the script does not trap in a line of
+# its own ("line N: PID Killed java -jar ..."); this script names the process that ended and its exit code instead.
+# The trap never runs: SIGKILL cannot be caught, nor ignored, by this script or its processes.
+trap '' KILL
 
 # The node (and robot-sim) built first, once, its progress shown: a node's ready time never includes a build.
 build_args=(--build-only)
@@ -284,8 +307,30 @@ start_node() {
   node_pids+=($!)
 }
 for k in $(seq 1 "$nodes"); do start_node "$k"; done
+# Up: each node's two lines, after its start level 1 (the core) and after level 2 (the edge, its REST API and the
+# dashboard); either says WITH PROBLEMS when something there did not start, such as the HTTP server on a port taken
+# after the check above. Such a node is not reported ready: the script shows why and stops them all.
 for k in $(seq 1 "$nodes"); do
-  await_line "${node_pids[k - 1]}" "$state_dir/$(node_name "$k")/node.log" "fabric node ready in" "$(node_name "$k")"
+  await_line "${node_pids[k - 1]}" "$state_dir/$(node_name "$k")/node.log" 'fabric node \(ready\|started\) in' \
+    "$(node_name "$k")"
+done
+for k in $(seq 1 "$nodes"); do
+  name="$(node_name "$k")"; log="$state_dir/$name/node.log"
+  await_line "${node_pids[k - 1]}" "$log" 'fabric node: \(start levels\|started in\)' "$name"
+  problems="$(grep -E '^fabric node:? started in [0-9]+ ms WITH PROBLEMS: ' "$log" | sed 's/^.* WITH PROBLEMS: //')" \
+    || true
+  [[ -n $problems ]] || continue
+  taken="$(sed -n 's/.*HTTP server (REST API, dashboard) is not listening: port \([0-9]*\) .*/\1/p' <<<"$problems")"
+  if [[ -n $taken ]]; then
+    hint="choose another with --http-port=N"
+    (( nodes > 1 )) && hint="choose other ports with --http-port=N (node K gets N+K-1)"
+    echo "fabric-nodes: $name started without its REST API and dashboard: port $taken of its HTTP server was" \
+      "taken when it started (by a program that took it after this script found it free); $hint (log: $log)" >&2
+  else
+    echo "fabric-nodes: $name started WITH PROBLEMS (log: $log):" >&2
+    sed 's/^/  /' <<<"$problems" >&2
+  fi
+  exit 1
 done
 
 # joined: each node's log says it joined, or why it did not: at once when it does not join at all (its key), after
@@ -314,9 +359,21 @@ for k in $(seq 1 "$nodes"); do
 done
 echo "fabric-nodes: Ctrl-C (or kill $$) stops every node$( [[ -n $broker_pid ]] && echo " and the broker")" >&2
 
-# Runs until a signal (the traps exit, the EXIT trap stops everything) or until a node ends.
+# Runs until a signal (the traps exit, the EXIT trap stops everything) or until a node or the embedded broker ends,
+# which the script then names, with its exit code.
 set +e
-wait -n "${node_pids[@]}"
+watched=("${node_pids[@]}")
+[[ -n $broker_pid ]] && watched+=("$broker_pid")
+wait -n "${watched[@]}"
 status=$?
-echo "fabric-nodes: a node ended (exit code $status); stopping the others" >&2
+ended="a process of the fabric"
+for k in $(seq 1 "$nodes"); do # the one that ended was reaped by 'wait -n': no process has its pid now
+  kill -0 "${node_pids[k - 1]}" 2>/dev/null || { ended="$(node_name "$k") (pid ${node_pids[k - 1]})"; break; }
+done
+if [[ -n $broker_pid ]] && ! kill -0 "$broker_pid" 2>/dev/null; then
+  ended="the embedded broker (pid $broker_pid, log $broker_log)"
+fi
+how="exit code $status"
+(( status > 128 && status < 160 )) && how+=", signal $(kill -l $((status - 128)))"
+echo "fabric-nodes: $ended ended ($how); stopping the others" >&2
 exit 1

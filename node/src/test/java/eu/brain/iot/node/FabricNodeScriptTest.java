@@ -143,6 +143,52 @@ class FabricNodeScriptTest {
         }
     }
 
+    @Test
+    void aTakenRestPortIsRefusedBeforeAnythingIsMadeOrBuilt() throws Exception {
+        fakeMaven(3, "echo 'mvn must not run: the port is found taken first' >&2\n");
+        Path state = configDir.resolve("fabric");
+        try (java.net.ServerSocket broker = new java.net.ServerSocket(0, 1, java.net.InetAddress.getLoopbackAddress());
+                java.net.ServerSocket taken = new java.net.ServerSocket(0, 1,
+                        java.net.InetAddress.getLoopbackAddress())) {
+            int port = taken.getLocalPort();
+            // one node joining a broker (the test's socket answers as one would), on the taken port
+            Result one = run("--broker=tcp://127.0.0.1:" + broker.getLocalPort(), "--name=node3", "--no-shell",
+                    "--http-port=" + port, "--state=" + state);
+            assertThat(one.code).as(one.output).isEqualTo(1);
+            assertThat(one.output).contains("port " + port + " of 127.0.0.1, for node3's REST API and dashboard, is "
+                    + "taken (another node or program listens there): choose another with --http-port=N")
+                    .doesNotContain("mvn must not run").doesNotContain("ready");
+            assertThat(state).as("nothing made or built before the port is found taken").doesNotExist();
+
+        }
+        // several nodes: node K's port is N+K-1, here node2's is the taken one
+        try (java.net.ServerSocket taken = secondOfTwoPorts()) {
+            int port = taken.getLocalPort();
+            Result several = run("--nodes=2", "--http-port=" + (port - 1), "--broker-port=" + NodeProcess.freePort(),
+                    "--state=" + state);
+            assertThat(several.code).as(several.output).isEqualTo(1);
+            assertThat(several.output).contains("port " + port + " of 127.0.0.1, for node2's REST API and dashboard,"
+                    + " is taken (another node or program listens there): choose other ports with --http-port=N (node"
+                    + " K gets N+K-1; now N is " + (port - 1) + ")").doesNotContain("mvn must not run");
+            assertThat(state).as("nothing made or built before the port is found taken").doesNotExist();
+        }
+    }
+
+    /** A socket listening on port N+1 of 127.0.0.1 where port N is free now. */
+    private static java.net.ServerSocket secondOfTwoPorts() throws IOException {
+        for (int tries = 0; tries < 50; tries++) {
+            int port = NodeProcess.freePort();
+            if (port < 65535) {
+                try {
+                    return new java.net.ServerSocket(port + 1, 1, java.net.InetAddress.getLoopbackAddress());
+                } catch (IOException taken) {
+                    // try another
+                }
+            }
+        }
+        throw new IOException("no two free consecutive ports on 127.0.0.1");
+    }
+
     private void fakeMaven(int exitCode, String body) throws IOException {
         Path mvn = bin.resolve("mvn");
         Files.writeString(mvn, "#!/bin/sh\n" + body + "exit " + exitCode + "\n");

@@ -4,6 +4,8 @@ import static org.assertj.core.api.Assertions.assertThat;
 import static org.awaitility.Awaitility.await;
 
 import java.io.IOException;
+import java.net.InetAddress;
+import java.net.ServerSocket;
 import java.net.URI;
 import java.net.http.HttpClient;
 import java.net.http.HttpRequest;
@@ -14,6 +16,8 @@ import java.nio.file.attribute.PosixFilePermissions;
 import java.time.Duration;
 import java.util.List;
 import java.util.concurrent.TimeUnit;
+import java.util.regex.Matcher;
+import java.util.regex.Pattern;
 
 import org.junit.jupiter.api.Test;
 import org.junit.jupiter.api.io.TempDir;
@@ -38,20 +42,13 @@ class FabricOfNodesScriptTest {
 
     @Test
     void twoNodesShareTheFleetAndEachRobotIsCommandedByTheNodeThatOwnsIt() throws Exception {
-        Path bin = Files.createDirectories(dir.resolve("bin"));
-        Path mvn = bin.resolve("mvn");
-        Files.writeString(mvn, "#!/bin/sh\necho 'mvn must not run here: the jars are built' >&2\nexit 3\n");
-        Files.setPosixFilePermissions(mvn, PosixFilePermissions.fromString("rwxr-xr-x"));
+        Path bin = failingMaven();
         int http = twoFreePorts();
         int fleet = NodeProcess.freePort();
         int broker = NodeProcess.freePort();
         Path out = dir.resolve("out.txt");
-        ProcessBuilder builder = new ProcessBuilder("bash", SCRIPT.toString(), "--nodes=2", "--fleet",
-                "--state=" + dir.resolve("fabric"), "--http-port=" + http, "--fleet-port=" + fleet,
-                "--broker-port=" + broker).redirectErrorStream(true).redirectOutput(out.toFile())
-                .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
-        builder.environment().put("PATH", bin + ":" + System.getenv("PATH"));
-        Process fabric = builder.start();
+        Process fabric = start(bin, out, "--nodes=2", "--fleet", "--state=" + dir.resolve("fabric"),
+                "--http-port=" + http, "--fleet-port=" + fleet, "--broker-port=" + broker);
         try {
             await("the fabric ready").atMost(START).pollInterval(Duration.ofMillis(200))
                     .failFast("the script ended", () -> !fabric.isAlive())
@@ -78,6 +75,94 @@ class FabricOfNodesScriptTest {
         assertThat(fabric.exitValue()).isEqualTo(143);
         assertThat(Files.readString(out)).contains("fabric-nodes: stopping 2 node(s) and the broker",
                 "fabric-nodes: stopped").doesNotContain("mvn must not run");
+    }
+
+    /**
+     * A node whose HTTP server cannot listen although the script found its port free (a program took the port in
+     * between; here the node is told another port, which a test socket holds, through the framework property that
+     * comes after the script's own) is not reported ready: the script names the node and the port, and stops.
+     */
+    @Test
+    void aNodeWithoutItsHttpServerIsNotReportedReady() throws Exception {
+        Path bin = failingMaven();
+        try (ServerSocket taken = new ServerSocket(0, 1, InetAddress.getLoopbackAddress())) {
+            Path out = dir.resolve("out.txt");
+            Process fabric = start(bin, out, "--nodes=1", "--no-shell", "--state=" + dir.resolve("fabric"),
+                    "--http-port=" + NodeProcess.freePort(), "--broker-port=" + NodeProcess.freePort(),
+                    "-Dorg.osgi.service.http.port=" + taken.getLocalPort());
+            try {
+                await("the script ended").atMost(START).pollInterval(Duration.ofMillis(200))
+                        .failFast("the script said the fabric is ready", () -> Files.readString(out)
+                                .contains("ready:"))
+                        .until(() -> !fabric.isAlive());
+            } finally {
+                stop(fabric);
+            }
+            String output = Files.readString(out);
+            assertThat(fabric.exitValue()).as(output).isEqualTo(1);
+            assertThat(output).contains("fabric-nodes: node1 started without its REST API and dashboard: port "
+                    + taken.getLocalPort() + " of its HTTP server was taken when it started")
+                    .contains("choose another with --http-port=N")
+                    .doesNotContain("ready:").doesNotContain("REST http").doesNotContain("mvn must not run");
+        }
+    }
+
+    /**
+     * The embedded broker killed (SIGKILL) while the fabric runs: the script says so in its own words, naming the
+     * broker and its exit code, without bash's job notice ("line N: PID Killed java -jar ..."), and stops the node.
+     */
+    @Test
+    void theEmbeddedBrokerKilledIsNamedWithItsExitCode() throws Exception {
+        Path bin = failingMaven();
+        Path out = dir.resolve("out.txt");
+        Process fabric = start(bin, out, "--nodes=1", "--no-shell", "--state=" + dir.resolve("fabric"),
+                "--http-port=" + NodeProcess.freePort(), "--broker-port=" + NodeProcess.freePort());
+        try {
+            await("the fabric ready").atMost(START).pollInterval(Duration.ofMillis(200))
+                    .failFast("the script ended", () -> !fabric.isAlive())
+                    .until(() -> Files.readString(out).contains("ready:"));
+            Matcher pid = Pattern.compile("embedded broker \\S+ \\(pid (\\d+),").matcher(Files.readString(out));
+            assertThat(pid.find()).as(Files.readString(out)).isTrue();
+            ProcessHandle broker = ProcessHandle.of(Long.parseLong(pid.group(1))).orElseThrow();
+            broker.destroyForcibly();
+
+            assertThat(fabric.waitFor(60, TimeUnit.SECONDS)).as(Files.readString(out)).isTrue();
+        } finally {
+            stop(fabric);
+        }
+        String output = Files.readString(out);
+        assertThat(fabric.exitValue()).as(output).isEqualTo(1);
+        assertThat(output).containsPattern("fabric-nodes: the embedded broker \\(pid \\d+, log .*broker\\.log\\) ended "
+                + "\\(exit code 137, signal KILL\\); stopping the others")
+                .contains("fabric-nodes: stopping 1 node(s)\n", "fabric-nodes: stopped")
+                .doesNotContain("Killed").doesNotContain("mvn must not run");
+    }
+
+    /** A folder with a {@code mvn} that fails, first on the PATH: the jars are built, no build runs in a test. */
+    private Path failingMaven() throws IOException {
+        Path bin = Files.createDirectories(dir.resolve("bin"));
+        Path mvn = bin.resolve("mvn");
+        Files.writeString(mvn, "#!/bin/sh\necho 'mvn must not run here: the jars are built' >&2\nexit 3\n");
+        Files.setPosixFilePermissions(mvn, PosixFilePermissions.fromString("rwxr-xr-x"));
+        return bin;
+    }
+
+    /** {@code ./fabric-node} with these arguments, its output (both streams) in the file, no console. */
+    private static Process start(Path bin, Path out, String... args) throws IOException {
+        List<String> command = new java.util.ArrayList<>(List.of("bash", SCRIPT.toString()));
+        command.addAll(List.of(args));
+        ProcessBuilder builder = new ProcessBuilder(command).redirectErrorStream(true).redirectOutput(out.toFile())
+                .redirectInput(ProcessBuilder.Redirect.from(new java.io.File("/dev/null")));
+        builder.environment().put("PATH", bin + ":" + System.getenv("PATH"));
+        return builder.start();
+    }
+
+    /** SIGTERM to the script, which stops what it started; SIGKILL when it has not ended within a minute. */
+    private static void stop(Process fabric) throws InterruptedException {
+        fabric.destroy();
+        if (!fabric.waitFor(60, TimeUnit.SECONDS)) {
+            fabric.destroyForcibly();
+        }
     }
 
     /**
