@@ -47,6 +47,8 @@ final class Outbox implements AutoCloseable {
     private final ArrayDeque<Pending> unjournaled = new ArrayDeque<>();
     /** The highest sequence number the journal holds (all lower ones are in it or acknowledged). */
     private long journaledThrough;
+    /** The highest sequence number of this epoch this run put on the wire: a lower one sent is sent again. */
+    private long sentThrough;
     /** An acknowledgement the journal does not record yet; 0: none. */
     private long ackToRecord;
     private final Object journalLock = new Object();
@@ -203,6 +205,27 @@ final class Outbox implements AutoCloseable {
         return batch;
     }
 
+    /**
+     * Events taken for a message are on the wire (the broker took the publication): counted as sent, and those of
+     * them sent before as sent again. Counted here, not when taken nor when rewound: a publication that fails leaves
+     * its events to be sent after the reconnection (their first sending), and an event rewound that is
+     * acknowledged before it goes again is not sent again.
+     */
+    synchronized void sent(Taken taken) {
+        List<Pending> events = taken.events();
+        int again = 0;
+        if (taken.epoch().equals(epoch)) { // else given up meanwhile: a new sequence starts at 1
+            for (Pending p : events) {
+                if (p.seq() <= sentThrough) {
+                    again++;
+                }
+            }
+            sentThrough = Math.max(sentThrough, events.isEmpty() ? 0 : events.get(events.size() - 1).seq());
+        }
+        stats.sent.add(events.size());
+        stats.resent(again);
+    }
+
     /** The destination took every event up to {@code through}; the journal records it at its next write. */
     synchronized void acked(String ackEpoch, long through) {
         if (!epoch.equals(ackEpoch) || through <= ackedThrough) {
@@ -244,8 +267,7 @@ final class Outbox implements AutoCloseable {
             unsent.addFirst(unacked.pollLast());
         }
         progressNanos = System.nanoTime();
-        stats.resent(n);
-        return n;
+        return n; // counted as sent again when they go again (sent)
     }
 
     /**
@@ -273,6 +295,7 @@ final class Outbox implements AutoCloseable {
                 epoch = newEpoch;
                 lastSeq = 0;
                 ackedThrough = 0;
+                sentThrough = 0;
                 journaledThrough = 0;
                 ackToRecord = 0;
                 progressNanos = System.nanoTime();

@@ -111,7 +111,7 @@ final class Sender {
         byte[] payload = wire.batch(settings.node(), outbox.destination(), taken.epoch(),
                 System.currentTimeMillis(), events);
         link.publish(topics.events(outbox.destination(), settings.node()), payload, false);
-        node.stats.sent.add(batch.size());
+        outbox.sent(taken); // not when the publication fails: its events go after the reconnection
         return outbox.hasUnsent();
     }
 

@@ -45,13 +45,6 @@ class FabricTest extends FabricTestBase {
         return "fabric-test";
     }
 
-    TestNode node(String name) throws Exception {
-        TestNode n = new TestNode(name, settings(name));
-        nodes.add(n);
-        n.start();
-        return n;
-    }
-
     /** A node whose behaviour is registered with its bus before it joins, as a node restarting with it. */
     TestNode node(String name, Recorder behaviour) throws Exception {
         TestNode n = new TestNode(name, settings(name));
@@ -142,6 +135,9 @@ class FabricTest extends FabricTestBase {
                 .isEqualTo(total + " received, backlog 0, b online at a"));
         assertThat(r.seqs()).as("every event once, in publish order").isEqualTo(range(1, total));
         assertThat(a.bus.statistics(MOVED).unhandled).isZero();
+        NodeStats.Snapshot s = a.statsOf("b");
+        assertThat(s.sent() - s.resent()).as("sent (resends included) less resent: " + s).isEqualTo(s.acked())
+                .isEqualTo(total);
     }
 
     /**

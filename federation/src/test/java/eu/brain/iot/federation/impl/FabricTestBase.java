@@ -60,6 +60,14 @@ abstract class FabricTestBase {
         FabricKey.generate(key);
     }
 
+    /** A node of this test's fabric, started. */
+    TestNode node(String name) throws Exception {
+        TestNode n = new TestNode(name, settings(name));
+        nodes.add(n);
+        n.start();
+        return n;
+    }
+
     /** The settings of a node of this test's fabric. */
     Settings settings(String name) {
         return Settings.of(broker.uri(), "test", name, key, tmp.resolve("state-" + name)).withResendTimeout(1000)

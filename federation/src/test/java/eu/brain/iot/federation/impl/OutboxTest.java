@@ -110,6 +110,38 @@ class OutboxTest {
         }
     }
 
+    /**
+     * What was sent, less what was sent again, is what the destination acknowledges in the end: an event whose
+     * publication failed (the broker went) is first sent after the reconnection, and an event rewound whose
+     * acknowledgement came before it went again was sent once.
+     */
+    @Test
+    void sentLessResentIsWhatWasAcknowledgedAcrossAFailedPublicationAndALateAcknowledgement() throws Exception {
+        NodeStats stats = new NodeStats();
+        try (Outbox outbox = new Outbox("b", dir.resolve("b.journal"), 100, stats)) {
+            String epoch = outbox.epoch();
+            append(outbox, 3);
+            outbox.writeJournal();
+            outbox.sent(outbox.takeBatch(1)); // 1 on the wire
+            outbox.takeBatch(1); // 2 taken, its publication failed: the broker went
+            outbox.rewind(true, 0); // the reconnection: 1 and 2 to send again
+            outbox.sent(outbox.takeBatch(10)); // 1 again, 2 and 3 for the first time
+            outbox.acked(epoch, 3);
+            NodeStats.Snapshot s = stats.snapshot();
+            assertThat(s.sent() + " sent, " + s.resent() + " resent, " + s.acked() + " acknowledged")
+                    .isEqualTo("4 sent, 1 resent, 3 acknowledged");
+
+            append(outbox, 1);
+            outbox.writeJournal();
+            outbox.sent(outbox.takeBatch(1)); // 4 on the wire
+            outbox.rewind(true, 0); // a reconnection; 4's acknowledgement comes before it goes again
+            outbox.acked(epoch, 4);
+            assertThat(outbox.hasUnsent()).isFalse();
+            s = stats.snapshot();
+            assertThat(s.sent() - s.resent()).as("sent less resent").isEqualTo(s.acked()).isEqualTo(4);
+        }
+    }
+
     @Test
     void aCompactedJournalKeepsThePendingEventsAndTheNumbering() throws Exception {
         String epoch;
