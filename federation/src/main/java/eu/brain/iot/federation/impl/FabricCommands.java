@@ -70,6 +70,11 @@ public final class FabricCommands {
                     s.resent(), s.acked(), s.received(), s.duplicates(), s.refused(), s.unsigned(), s.badSignature(),
                     s.replayed(), s.backlog()));
         });
+        // refusals from names no verified message came from, and on this node's own topics: one row, so that a
+        // client without the key adds no row
+        NodeStats.Snapshot u = node.unverified();
+        out.append(String.format("%-20s %10s %8s %10s %10s %10s %8d %8d %8d %8d %8s%n", Refusals.UNVERIFIED, "-", "-",
+                "-", "-", "-", u.refused(), u.unsigned(), u.badSignature(), u.replayed(), "-"));
         return out.toString();
     }
 

@@ -14,7 +14,6 @@ import java.util.concurrent.ScheduledExecutorService;
 import java.util.concurrent.TimeUnit;
 import java.util.stream.Stream;
 
-import eu.brain.iot.eventing.spi.EventForwarder;
 import eu.brain.iot.federation.impl.Wire.MalformedException;
 
 /**
@@ -26,7 +25,8 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * <ul>
  * <li>{@code brain-iot-fabric-in} (one thread): every received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
- * {@link Inboxes} and their acknowledgements, connection events, the resend check, giving up on the events kept for
+ * {@link Inboxes} and their acknowledgements, the {@link Refusals} and this node's own retained topics
+ * ({@link OwnTopics}), connection events, the resend check, giving up on the events kept for
  * a node gone for good ({@link GivingUp}); Paho's threads only queue work here;</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals and when
  * this node was last connected ({@link LastConnected}), takes batches from the outboxes and publishes them;</li>
@@ -56,6 +56,8 @@ public final class FabricNode implements AutoCloseable {
     private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
     private final Inboxes inboxes;
     private final GivingUp givingUp;
+    private final Refusals refusals;
+    private final OwnTopics ownTopics;
     private final LastConnected lastConnected;
     private volatile List<InterestEntry> localInterest = List.of();
     private volatile boolean closed;
@@ -103,9 +105,12 @@ public final class FabricNode implements AutoCloseable {
                         in.execute(() -> onMessage(topic, payload, signature));
                     }
                 });
+        this.refusals = new Refusals(settings, host, System::currentTimeMillis);
+        this.ownTopics = new OwnTopics(key, refusals, in, System::currentTimeMillis, this::republish);
         this.givingUp = new GivingUp(settings, host, wire, in, this::node, outboxes);
         this.membership = new Membership(settings.fabric(), host, in, () -> link.isConnected() ? link.since() : -1,
-                this::node, this::outbox, ToNode::new, givingUp::wentOffline);
+                this::node, this::outbox, d -> new ToNode(d, this::outbox, outboxes::get, wire, this::wakeSender),
+                givingUp::wentOffline);
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host, lastConnected);
         this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
@@ -185,6 +190,10 @@ public final class FabricNode implements AutoCloseable {
         });
     }
 
+    private void wakeSender() {
+        sender.wake();
+    }
+
     RemoteNode node(String name) {
         return nodes.computeIfAbsent(name, RemoteNode::new);
     }
@@ -203,6 +212,9 @@ public final class FabricNode implements AutoCloseable {
             publishInterest();
             publishPresence(Wire.Status.ONLINE);
             joined = true;
+            if (!again) {
+                in.schedule(refusals::checkAlone, Refusals.ALONE_AFTER_MILLIS, TimeUnit.MILLISECONDS);
+            }
             host.info("Fabric {}: node {} joined through {}{}", settings.fabric(), settings.node(),
                     settings.brokerUri(), again ? " again" : "");
         } catch (IOException | InterruptedException e) {
@@ -252,30 +264,32 @@ public final class FabricNode implements AutoCloseable {
         }
         boolean own = t.node().equals(settings.node());
         if (own && (Topics.INTEREST.equals(t.kind()) || Topics.STATUS.equals(t.kind()))) {
+            ownTopics.received(topic, t.kind(), payload, signature);
             return;
         }
         String claimed = own ? t.other() : t.node();
         if (claimed == null || !Settings.NAME.matcher(claimed).matches()) {
             return;
         }
+        RemoteNode known = nodes.get(claimed); // a refused message never adds a node
         if (payload.length == 0 && !own) {
-            membership.interestCleared(claimed); // a retained message removed
-            installer.membershipChanged(claimed);
+            if (known != null) {
+                membership.interestCleared(claimed); // a retained message removed
+                installer.membershipChanged(claimed);
+            }
             return;
         }
+        if (signature == null || !key.verify(topic, payload, signature)) {
+            refusals.refused(topic, claimed, signature == null ? Refusals.Reason.UNSIGNED
+                    : Refusals.Reason.BAD_SIGNATURE, null, known);
+            return;
+        }
+        refusals.verified();
         NodeStats stats = node(claimed).stats;
-        if (signature == null) {
-            stats.unsigned.increment();
-            return;
-        }
-        if (!key.verify(topic, payload, signature)) {
-            stats.badSignature.increment();
-            return;
-        }
         try {
             switch (t.kind()) {
-            case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats);
-            case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats);
+            case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats, topic);
+            case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats, topic);
             case Topics.INTEREST -> {
                 membership.onInterest(claimed, wire.readInterest(payload), stats);
                 installer.membershipChanged(claimed); // after the forwarders: an install waiting for them ends
@@ -284,92 +298,74 @@ public final class FabricNode implements AutoCloseable {
                 installer.membershipChanged(claimed);
                 sender.wake(); // a node back online: what was kept for it goes now
             });
-            case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats);
-            default -> stats.malformed.increment();
+            case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats, topic);
+            default -> refusals.refused(topic, claimed, Refusals.Reason.MALFORMED, "no such topic", node(claimed));
             }
         } catch (MalformedException e) {
-            stats.malformed.increment();
+            refusals.refused(topic, claimed, Refusals.Reason.MALFORMED, e.getMessage(), node(claimed));
         } catch (IOException e) {
             host.warn("Fabric {}: the state of node {} cannot be written in {}: {}", settings.fabric(),
                     settings.node(), settings.stateDir(), e.getMessage());
         }
     }
 
-    private boolean fresh(long sent, NodeStats stats) {
-        if (Math.abs(System.currentTimeMillis() - sent) > settings.maxAgeMillis()) {
-            stats.replayed.increment();
+    /** Publishes this node's own retained message of one kind again (a refused one stood in for it). */
+    private void republish(String kind) {
+        if (closed || !link.isConnected()) {
+            return; // announced anew at the next connection
+        }
+        try {
+            if (Topics.STATUS.equals(kind)) {
+                publishPresence(Wire.Status.ONLINE);
+            } else {
+                publishInterest();
+            }
+        } catch (IOException | InterruptedException e) {
+            host.warn("Fabric {}: node {} could not publish its {} again ({}); it does at its next connection",
+                    settings.fabric(), settings.node(), kind, e.getMessage());
+        }
+    }
+
+    private boolean fresh(String from, long sent, String topic) {
+        long age = System.currentTimeMillis() - sent;
+        if (Math.abs(age) > settings.maxAgeMillis()) {
+            refusals.refused(topic, from, Refusals.Reason.REPLAYED,
+                    age > 0 ? age + " ms ago" : -age + " ms ahead", nodes.get(from));
             return false;
         }
         return true;
     }
 
-    private void onBatch(String from, Wire.Batch batch, NodeStats stats) throws IOException {
+    private void onBatch(String from, Wire.Batch batch, NodeStats stats, String topic) throws IOException {
         if (!batch.from().equals(from) || !batch.to().equals(settings.node())) {
             stats.malformed.increment();
             return;
         }
-        if (!fresh(batch.sent(), stats)) {
+        if (!fresh(from, batch.sent(), topic)) {
             return;
         }
         inboxes.accept(from, batch, stats);
     }
 
-    private void onInstall(String from, Wire.Install message, NodeStats stats) {
+    private void onInstall(String from, Wire.Install message, NodeStats stats, String topic) {
         if (!message.from().equals(from) || !message.to().equals(settings.node())) {
             stats.malformed.increment();
-        } else if (fresh(message.sent(), stats)) {
+        } else if (fresh(from, message.sent(), topic)) {
             installer.received(message);
         }
     }
 
-    private void onAck(String from, Wire.Ack ack, NodeStats stats) throws IOException {
+    private void onAck(String from, Wire.Ack ack, NodeStats stats, String topic) throws IOException {
         if (!ack.from().equals(from) || !ack.to().equals(settings.node())) {
             stats.malformed.increment();
             return;
         }
-        if (!fresh(ack.sent(), stats)) {
+        if (!fresh(from, ack.sent(), topic)) {
             return;
         }
         Outbox outbox = outboxes.get(from);
         if (outbox != null) {
             outbox.acked(ack.epoch(), ack.through());
-        }
-    }
-
-    // ---- sending ----------------------------------------------------------------------------------------------
-
-    /**
-     * The forwarders to one node: each event kept in the node's outbox and sent by the sender. On the publisher's
-     * thread when the outbox has room (and exists: opening its journal is for a delivery worker), else on a
-     * delivery worker of the bus, waiting for room.
-     */
-    private final class ToNode implements EventForwarder {
-        private final String destination;
-
-        ToNode(String destination) {
-            this.destination = destination;
-        }
-
-        @Override
-        public void forward(String type, List<String> names, Map<String, Object> data) {
-            try {
-                outbox(destination).append(seq -> wire.event(seq, type, names, data));
-            } catch (InterruptedException e) {
-                Thread.currentThread().interrupt();
-                throw new IllegalStateException("the forwarder to " + destination + " was stopped while it waited "
-                        + "for room", e);
-            }
-            sender.wake();
-        }
-
-        @Override
-        public boolean forwardNow(String type, List<String> names, Map<String, Object> data) {
-            Outbox outbox = outboxes.get(destination);
-            if (outbox == null || !outbox.tryAppend(seq -> wire.event(seq, type, names, data))) {
-                return false;
-            }
-            sender.wake();
-            return true;
         }
     }
 
@@ -413,6 +409,11 @@ public final class FabricNode implements AutoCloseable {
         nodes.values().forEach(n -> views.put(n.name, new NodeView(n.name, n.status.name().toLowerCase(),
                 n.interest, n.stats.snapshot())));
         return new ArrayList<>(views.values());
+    }
+
+    /** @return the messages refused from names this node knows as no node, and on its own topics */
+    public NodeStats.Snapshot unverified() {
+        return refusals.unverified.snapshot();
     }
 
     /** Leave the fabric: announce offline, disconnect normally, keep unacknowledged events in the journals. */

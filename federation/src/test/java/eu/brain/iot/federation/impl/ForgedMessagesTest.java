@@ -1,0 +1,144 @@
+package eu.brain.iot.federation.impl;
+
+import static org.assertj.core.api.Assertions.assertThat;
+import static org.awaitility.Awaitility.await;
+
+import java.nio.charset.StandardCharsets;
+import java.nio.file.Path;
+import java.time.Duration;
+import java.util.List;
+
+import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
+import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
+import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
+import org.eclipse.paho.mqttv5.common.MqttMessage;
+import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
+import org.eclipse.paho.mqttv5.common.packet.UserProperty;
+import org.junit.jupiter.api.AfterEach;
+import org.junit.jupiter.params.ParameterizedTest;
+import org.junit.jupiter.params.provider.EnumSource;
+
+import eu.brain.iot.federation.impl.Events.Moved;
+import eu.brain.iot.federation.impl.Events.Recorder;
+
+/**
+ * Retained messages a client without the fabric key publishes on the fabric's topics, and a node with another
+ * fabric's key: a forged message on a node's own status or interest is replaced at once by the node's own (nodes that
+ * start later see it), forged names never enter a node's table, and both sides of a wrong key say so in the log.
+ */
+class ForgedMessagesTest extends FabricTestBase {
+
+    static final Duration DEADLINE = Duration.ofSeconds(60);
+    static final String MOVED = Moved.class.getName();
+    static final byte[] GARBAGE = "garbage".getBytes(StandardCharsets.UTF_8);
+
+    MqttAsyncClient attacker;
+
+    @Override
+    String logPrefix() {
+        return "forged-messages-test";
+    }
+
+    @AfterEach
+    void closeAttacker() throws Exception {
+        if (attacker != null) {
+            attacker.disconnectForcibly(0, 1, false);
+            attacker.close(true);
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aForgedRetainedStatusAndInterestOfALiveNodeAreReplacedByItsOwn(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        b.addBehaviour(new Recorder(), null, MOVED);
+        FabricTest.awaitInterest(a, b, 1);
+
+        Topics topics = new Topics("test");
+        connectAttacker();
+        publish(topics.status("b"), GARBAGE, null, true);
+        publish(topics.interest("b"), GARBAGE, null, true);
+        await("b refuses both").atMost(DEADLINE).until(() -> b.fabric.unverified().unsigned() == 2);
+
+        TestNode c = node("c"); // started after: it finds at the broker what b published again
+        FabricTest.awaitInterest(c, b, 1);
+        assertThat(b.log).filteredOn(l -> l.startsWith("WARN") && l.contains("on its own retained topic "
+                + topics.status("b") + ": it carries no signature")).hasSize(1);
+        assertThat(b.log).filteredOn(l -> l.contains("on its own retained topic " + topics.interest("b")))
+                .singleElement().asString().contains("this node publishes its own again");
+        assertThat(a.statusOf("b")).isEqualTo("online");
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void forgedNamesNeverEnterTheTableOfNodes(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        FabricTest.awaitInterest(a, b, 0);
+
+        Topics topics = new Topics("test");
+        connectAttacker();
+        publish(topics.status("evil"), GARBAGE, null, true);
+        publish(topics.interest("evil"), GARBAGE, null, true);
+        publish(topics.status("evil2"), GARBAGE, FabricKey.of(new byte[32]).sign(topics.status("evil2"), GARBAGE),
+                true);
+        await("refused as unverified").atMost(DEADLINE).until(() -> a.fabric.unverified().refused() == 3
+                && b.fabric.unverified().refused() == 3);
+        publish(topics.status("evil"), new byte[0], null, true); // the retained messages removed
+        publish(topics.interest("evil"), new byte[0], null, true);
+        publish(topics.status("evil2"), new byte[0], null, true);
+
+        TestNode c = node("c"); // started after the forged messages were removed: a fresh view
+        FabricTest.awaitInterest(a, c, 0);
+        for (TestNode n : List.of(a, b)) {
+            assertThat(n.fabric.nodes()).extracting(FabricNode.NodeView::node).as("the table of " + n.name)
+                    .containsExactly("a", "b", "c");
+            assertThat(n.log).filteredOn(l -> l.contains("claiming to come from node evil2")).singleElement()
+                    .asString().contains("(counted in fabric:stats as BAD-SIG, row (unverified))");
+        }
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
+    void aNodeWithAnotherFabricsKeyIsToldOnBothSides(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        FabricTest.awaitInterest(a, b, 0);
+        Path otherKey = tmp.resolve("other-fabric.key");
+        FabricKey.generate(otherKey);
+        TestNode c = new TestNode("c", Settings.of(broker.uri(), "test", "c", otherKey, tmp.resolve("state-c"))
+                .withResendTimeout(1000).withKeepAlive(2));
+        nodes.add(c);
+        c.start();
+
+        await("a refuses c's status and interest").atMost(DEADLINE)
+                .until(() -> a.fabric.unverified().badSignature() == 2);
+        assertThat(a.log).filteredOn(l -> l.startsWith("WARN") && l.contains("claiming to come from node c"))
+                .as("one line for both").singleElement().asString()
+                .contains("its signature does not match this node's fabric key")
+                .contains("The sending node may use another fabric key: every node of a fabric needs the same key "
+                        + "file; federation/README.md (\"Trust\") says how to share it");
+        await("c says its key is most likely wrong").atMost(DEADLINE).until(() -> c.log.stream()
+                .anyMatch(l -> l.startsWith("WARN") && l.contains("has refused every message of the other nodes "
+                        + "(a, b)") && l.contains("this node's key file " + otherKey + " is most likely not")));
+        assertThat(c.fabric.nodes()).extracting(FabricNode.NodeView::node).containsExactly("c");
+        assertThat(a.fabric.nodes()).extracting(FabricNode.NodeView::node).containsExactly("a", "b");
+    }
+
+    private void connectAttacker() throws Exception {
+        attacker = new MqttAsyncClient(broker.uri(), "intruder", new MemoryPersistence());
+        attacker.connect(new MqttConnectionOptions()).waitForCompletion(15_000);
+    }
+
+    private void publish(String topic, byte[] payload, String signature, boolean retained) throws Exception {
+        MqttProperties props = new MqttProperties();
+        if (signature != null) {
+            props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, signature)));
+        }
+        attacker.publish(topic, new MqttMessage(payload, 1, retained, props)).waitForCompletion(15_000);
+    }
+}
