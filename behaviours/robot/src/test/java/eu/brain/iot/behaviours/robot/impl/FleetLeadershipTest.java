@@ -55,31 +55,16 @@ class FleetLeadershipTest {
         }
     }
 
-    /** A node that owns the whole fleet of one robot. */
-    static final class WholeFleet implements DeviceOwnership {
-        @Override
-        public String nodeName() {
-            return "node1";
-        }
-
-        @Override
-        public Set<String> owned() {
-            return Set.of("robot1");
-        }
-
+    /** A node's share of a fleet. */
+    record Ownership(String nodeName, Set<String> owned, Set<String> fleet) implements DeviceOwnership {
         @Override
         public Set<String> share() {
-            return Set.of("robot1");
-        }
-
-        @Override
-        public Set<String> fleet() {
-            return Set.of("robot1");
+            return owned;
         }
 
         @Override
         public boolean owns(String deviceId) {
-            return "robot1".equals(deviceId);
+            return owned.contains(deviceId);
         }
 
         @Override
@@ -93,52 +78,17 @@ class FleetLeadershipTest {
         }
     }
 
-    /** A node that owns robot1 of a fleet of two. */
-    static final class SharedFleet implements DeviceOwnership {
-        private final WholeFleet one = new WholeFleet();
-
-        @Override
-        public String nodeName() {
-            return "node2";
-        }
-
-        @Override
-        public Set<String> owned() {
-            return one.owned();
-        }
-
-        @Override
-        public Set<String> share() {
-            return one.share();
-        }
-
-        @Override
-        public Set<String> fleet() {
-            return Set.of("robot1", "robot2");
-        }
-
-        @Override
-        public boolean owns(String deviceId) {
-            return one.owns(deviceId);
-        }
-
-        @Override
-        public Set<String> take(Set<String> deviceIds) {
-            return Set.of();
-        }
-
-        @Override
-        public Set<String> release(Set<String> deviceIds) {
-            return Set.of();
-        }
+    /** A node that owns the whole fleet of one robot. */
+    private static Ownership wholeFleet() {
+        return new Ownership("node1", Set.of("robot1"), Set.of("robot1"));
     }
 
     @Test
     void theLeadersBeatsCarryItsErrandTableAndAStandbyKeepsItForItsTakeover() throws Exception {
         Recorded bus = new Recorded();
-        FleetLeadership leader = new FleetLeadership(bus, new WholeFleet(), null);
+        FleetLeadership leader = new FleetLeadership(bus, wholeFleet(), null);
         Recorded standbyBus = new Recorded();
-        FleetLeadership standby = new FleetLeadership(standbyBus, new SharedFleet(), null);
+        FleetLeadership standby = new FleetLeadership(standbyBus, new Ownership("node2", Set.of("robot1"), Set.of("robot1", "robot2")), null);
         try {
             leader.handover().share(() -> "robot1 1,1 1 TO_DOCK - - -\n");
             await().atMost(DEADLINE).until(() -> bus.beats().stream().anyMatch(b -> b.errands != null
@@ -162,7 +112,7 @@ class FleetLeadershipTest {
     @Test
     void anInstanceThatStopsSaysSoAfterItsLastBeat() throws Exception {
         Recorded bus = new Recorded();
-        FleetLeadership first = new FleetLeadership(bus, new WholeFleet(), null);
+        FleetLeadership first = new FleetLeadership(bus, wholeFleet(), null);
         await().atMost(DEADLINE).until(() -> bus.beats().size() >= 2);
         first.deactivate();
 
@@ -177,13 +127,13 @@ class FleetLeadershipTest {
     void theInstanceStartedAgainOnTheNodeLeadsAtOnceThoughABeatOfTheOneBeforeArrivesAfterItsFarewell()
             throws Exception {
         Recorded before = new Recorded();
-        FleetLeadership first = new FleetLeadership(before, new WholeFleet(), null);
+        FleetLeadership first = new FleetLeadership(before, wholeFleet(), null);
         await().atMost(DEADLINE).until(() -> before.beats().size() >= 2);
         first.deactivate();
         List<RobotBehaviourAlive> old = before.beats();
 
         Recorded now = new Recorded();
-        FleetLeadership again = new FleetLeadership(now, new WholeFleet(), null);
+        FleetLeadership again = new FleetLeadership(now, wholeFleet(), null);
         try {
             // the older instance started earlier: heard alone, it would lead for an alive period (2 s)
             again.notify(old.get(old.size() - 1)); // the farewell
