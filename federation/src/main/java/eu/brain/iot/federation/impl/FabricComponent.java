@@ -327,6 +327,11 @@ public final class FabricComponent implements Host, FabricMonitor {
                 node.joined() ? FabricStatus.ONLINE : FabricStatus.JOINING, null, node.nodes(), installed());
     }
 
+    @Override
+    public long unverifiedRefused() {
+        return node == null ? 0 : node.unverified().refused();
+    }
+
     /** How many behaviours the node's own installer installed; {@code null} without one, or one going away. */
     private Integer installed() {
         BundleInstaller local = node.installer() instanceof FabricInstaller f ? f.local() : null;

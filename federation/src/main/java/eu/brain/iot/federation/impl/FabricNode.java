@@ -272,16 +272,10 @@ public final class FabricNode implements AutoCloseable {
             return;
         }
         RemoteNode known = nodes.get(claimed); // a refused message never adds a node
-        if (payload.length == 0 && !own) {
-            if (known != null) {
-                membership.interestCleared(claimed); // a retained message removed
-                installer.membershipChanged(claimed);
-            }
-            return;
-        }
-        if (signature == null || !key.verify(topic, payload, signature)) {
-            refusals.refused(topic, claimed, signature == null ? Refusals.Reason.UNSIGNED
-                    : Refusals.Reason.BAD_SIGNATURE, null, known);
+        // an empty one (a retained message removed) included: a node gone is told by its signed status instead
+        Refusals.Reason refused = Refusals.check(key, topic, payload, signature);
+        if (refused != null) {
+            refusals.refused(topic, claimed, refused, null, known);
             return;
         }
         refusals.verified();

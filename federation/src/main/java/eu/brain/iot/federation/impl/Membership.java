@@ -77,12 +77,6 @@ final class Membership {
         syncForwarders(node);
     }
 
-    void interestCleared(String from) {
-        RemoteNode node = node(from);
-        node.interest = List.of();
-        syncForwarders(node);
-    }
-
     /**
      * A node's status: online at once, offline once this node's connection has outlived it (class comment).
      *

@@ -52,14 +52,8 @@ final class OwnTopics {
 
     /** A message received on this node's own {@code kind} topic ({@link Topics#STATUS}, {@link Topics#INTEREST}). */
     void received(String topic, String kind, byte[] payload, String signature) {
-        Refusals.Reason reason;
-        if (payload.length == 0) {
-            reason = Refusals.Reason.REMOVED;
-        } else if (signature == null) {
-            reason = Refusals.Reason.UNSIGNED;
-        } else if (!key.verify(topic, payload, signature)) {
-            reason = Refusals.Reason.BAD_SIGNATURE;
-        } else {
+        Refusals.Reason reason = Refusals.check(key, topic, payload, signature);
+        if (reason == null) {
             return; // this node's own
         }
         refusals.refusedOwn(topic, reason);

@@ -76,6 +76,23 @@ final class Refusals {
         this.clock = clock;
     }
 
+    /**
+     * Why a received message is refused, the one check every received message passes before anything of it is
+     * applied: an empty payload (it removes a retained message) always, since no node of a fabric publishes one, so
+     * none is ever signed by a member; otherwise no signature, or one that does not match the fabric's key.
+     *
+     * @return {@code null} when the message is to be applied
+     */
+    static Reason check(FabricKey key, String topic, byte[] payload, String signature) {
+        if (payload.length == 0) {
+            return Reason.REMOVED;
+        }
+        if (signature == null) {
+            return Reason.UNSIGNED;
+        }
+        return key.verify(topic, payload, signature) ? null : Reason.BAD_SIGNATURE;
+    }
+
     /** A message of another node passed the signature check. */
     void verified() {
         heardVerified = true;
@@ -178,7 +195,8 @@ final class Refusals {
                 + "from this node's clock: a replay, or the two nodes' clocks disagree (keep them in time with NTP)";
         case MALFORMED -> "it is not in the fabric's wire format (" + shortened(detail) + "): a node of another "
                 + "build, or a client publishing by hand";
-        case REMOVED -> "it removes the retained message (an empty payload)";
+        case REMOVED -> "it removes the retained message (an empty payload), which no node of this fabric "
+                + "publishes (a client of the broker without the fabric key did); nothing of it was applied";
         };
     }
 

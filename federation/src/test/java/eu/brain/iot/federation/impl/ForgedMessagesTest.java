@@ -24,13 +24,16 @@ import eu.brain.iot.federation.impl.Events.Recorder;
 /**
  * Retained messages a client without the fabric key publishes on the fabric's topics, and a node with another
  * fabric's key: a forged message on a node's own status or interest is replaced at once by the node's own (nodes that
- * start later see it), forged names never enter a node's table, and both sides of a wrong key say so in the log.
+ * start later see it), a removal of a live node's retained messages changes no other node's routing to it, forged
+ * names never enter a node's table, and both sides of a wrong key say so in the log.
  */
 class ForgedMessagesTest extends FabricTestBase {
 
     static final Duration DEADLINE = Duration.ofSeconds(60);
     static final String MOVED = Moved.class.getName();
     static final byte[] GARBAGE = "garbage".getBytes(StandardCharsets.UTF_8);
+    /** Retained messages of one node an attacker removes: its status and its interest. */
+    static final int REMOVALS = 2;
 
     MqttAsyncClient attacker;
 
@@ -73,6 +76,39 @@ class ForgedMessagesTest extends FabricTestBase {
 
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
+    void anUnsignedRemovalOfALiveNodesRetainedMessagesChangesNoOtherNodesRouting(Broker.Kind kind)
+            throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        Recorder r = new Recorder();
+        TestNode b = node("b");
+        b.addBehaviour(r, null, MOVED);
+        FabricTest.awaitInterest(a, b, 1);
+
+        Topics topics = new Topics("test");
+        connectAttacker();
+        publish(topics.interest("b"), new byte[0], null, true); // as mosquitto_pub -r -n would
+        publish(topics.status("b"), new byte[0], null, true);
+        await("a hears both removals").atMost(DEADLINE)
+                .until(() -> a.statsOf("b").unsigned() == REMOVALS || a.forwardersRemovedTo("b") > 0);
+        assertThat(a.forwardersRemovedTo("b")).as("a's forwarders to b, all kept").isZero();
+        assertThat(a.statsOf("b").unsigned()).as("refused in b's row").isEqualTo(REMOVALS);
+        assertThat(a.log).filteredOn(l -> l.startsWith("WARN") && l.contains("claiming to come from node b"))
+                .singleElement().asString().contains("it removes the retained message (an empty payload)")
+                .contains("(counted in fabric:stats as UNSIGNED, row b)");
+        assertThat(a.fabric.unverified().refused()).as("b is a node a knows").isZero();
+
+        a.bus.deliver(new Moved("r1", 1));
+        await("a still routes to b").atMost(DEADLINE).until(() -> r.seqs().equals(List.of(1L)));
+        assertThat(a.statusOf("b")).isEqualTo("online");
+        await("b refuses the removals of its own").atMost(DEADLINE)
+                .until(() -> b.fabric.unverified().unsigned() == REMOVALS);
+        TestNode c = node("c"); // started after: it finds at the broker what b published again
+        FabricTest.awaitInterest(c, b, 1);
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
     void forgedNamesNeverEnterTheTableOfNodes(Broker.Kind kind) throws Exception {
         startBroker(kind);
         TestNode a = node("a");
@@ -85,19 +121,26 @@ class ForgedMessagesTest extends FabricTestBase {
         publish(topics.interest("evil"), GARBAGE, null, true);
         publish(topics.status("evil2"), GARBAGE, FabricKey.of(new byte[32]).sign(topics.status("evil2"), GARBAGE),
                 true);
-        await("refused as unverified").atMost(DEADLINE).until(() -> a.fabric.unverified().refused() == 3
-                && b.fabric.unverified().refused() == 3);
+        int forged = 3;
+        await("refused as unverified").atMost(DEADLINE).until(() -> a.fabric.unverified().refused() == forged
+                && b.fabric.unverified().refused() == forged);
         publish(topics.status("evil"), new byte[0], null, true); // the retained messages removed
         publish(topics.interest("evil"), new byte[0], null, true);
         publish(topics.status("evil2"), new byte[0], null, true);
+        await("the removals refused as unverified too").atMost(DEADLINE)
+                .until(() -> a.fabric.unverified().refused() == 2 * forged
+                        && b.fabric.unverified().refused() == 2 * forged);
 
         TestNode c = node("c"); // started after the forged messages were removed: a fresh view
         FabricTest.awaitInterest(a, c, 0);
         for (TestNode n : List.of(a, b)) {
             assertThat(n.fabric.nodes()).extracting(FabricNode.NodeView::node).as("the table of " + n.name)
                     .containsExactly("a", "b", "c");
-            assertThat(n.log).filteredOn(l -> l.contains("claiming to come from node evil2")).singleElement()
-                    .asString().contains("(counted in fabric:stats as BAD-SIG, row (unverified))");
+            assertThat(n.log).filteredOn(l -> l.contains("claiming to come from node evil2"))
+                    .as("its forged status, then its removal").satisfiesExactly(
+                            l -> assertThat(l).contains("(counted in fabric:stats as BAD-SIG, row (unverified))"),
+                            l -> assertThat(l).contains("it removes the retained message")
+                                    .contains("(counted in fabric:stats as UNSIGNED, row (unverified))"));
         }
     }
 

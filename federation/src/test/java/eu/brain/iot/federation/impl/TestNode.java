@@ -29,6 +29,8 @@ final class TestNode implements Host, AutoCloseable {
     final List<String> log = new CopyOnWriteArrayList<>();
     private final Map<Long, InterestEntry> behaviours = new ConcurrentHashMap<>();
     private final Map<String, Integer> forwarders = new ConcurrentHashMap<>();
+    /** By destination: forwarders removed since the node started. */
+    private final Map<String, Integer> forwardersRemoved = new ConcurrentHashMap<>();
 
     /** A node not started yet: behaviours added now are there before the node joins. */
     TestNode(String name, Settings settings) throws Exception {
@@ -81,12 +83,18 @@ final class TestNode implements Host, AutoCloseable {
         return () -> {
             bus.removeBehaviour(id);
             forwarders.merge(destination, -1, Integer::sum);
+            forwardersRemoved.merge(destination, 1, Integer::sum);
         };
     }
 
     /** @return the forwarders on this node's bus to {@code destination} now: what routes events there */
     int forwardersTo(String destination) {
         return forwarders.getOrDefault(destination, 0);
+    }
+
+    /** @return the forwarders to {@code destination} removed since this node started (a moment unrouted) */
+    int forwardersRemovedTo(String destination) {
+        return forwardersRemoved.getOrDefault(destination, 0);
     }
 
     @Override

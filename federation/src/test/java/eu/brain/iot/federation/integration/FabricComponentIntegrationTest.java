@@ -65,6 +65,7 @@ import eu.brain.iot.eventing.annotation.SmartBehaviourNamespace;
 import eu.brain.iot.eventing.api.EventBus;
 import eu.brain.iot.eventing.api.UntypedSmartBehaviour;
 import eu.brain.iot.eventing.spi.EventForwarder;
+import eu.brain.iot.federation.monitoring.api.FabricMonitor;
 
 /**
  * The federation bundle in a real Felix with the real bus, joined to a real Mosquitto (a process started by the test
@@ -179,6 +180,11 @@ class FabricComponentIntegrationTest {
         // (a later announcement may replace both between two reads: its own signature then follows)
         await().atMost(DEADLINE).untilAsserted(() -> assertThat(signatures.get(interestTopic))
                 .isEqualTo(sign(key, interestTopic, retained.get(interestTopic))));
+        // an unsigned message claiming a name no verified message came from: in the monitor's total of such
+        peer.publish(BASE + "stranger/status", new MqttMessage("{}".getBytes(StandardCharsets.UTF_8), 1, false,
+                new MqttProperties())).waitForCompletion(10_000);
+        FabricMonitor monitor = context.getService(context.getServiceReference(FabricMonitor.class));
+        await().atMost(DEADLINE).until(() -> monitor.unverifiedRefused() == 1);
 
         // the peer announces itself: this node registers a forwarder for it and routes it.Pong there
         long now = System.currentTimeMillis();
