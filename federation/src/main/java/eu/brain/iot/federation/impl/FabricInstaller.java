@@ -46,9 +46,8 @@ import eu.brain.iot.federation.impl.RemoteNode.Presence;
  * registered with the bus (which hands the events it held over in that step). It fails with an
  * {@link InstallException} naming the node and the reason when the result is a failure, the node is not online or
  * goes offline meanwhile, the order cannot be sent, or {@code install.timeout.ms} passes.</li>
- * <li>When no node online offers a behaviour, a node that is offline and whose last interest took the types is the
- * answer ({@link Departed}): its install waits for that node to come back with the interest, up to
- * {@code install.timeout.ms}, while the BMS holds the events.</li>
+ * <li>When no node online offers a behaviour, an offline node whose last interest took the types is the answer
+ * ({@link Departed}): its install waits up to {@code install.timeout.ms} for it, the BMS holding the events.</li>
  * <li>The rest ({@code installed}, {@code uninstall}, ...) is the local installer's.</li>
  * </ul>
  * Threads: the methods of {@link BundleInstaller} are called on any thread (the BMS's, publishers'); they read
