@@ -173,8 +173,13 @@ EOF
     cat >"$dir/eu.brain.iot.federation.lease.cfg" <<EOF
 # Written by node/bin/fabric-nodes.sh at every start: the device leases, their defaults (federation/README.md).
 EOF
+    cat >"$dir/eu.brain.iot.bms.cfg" <<EOF
+# Written by node/bin/fabric-nodes.sh at every start: the robot behaviour of all nodes but one stands by, so the
+# robot events that had it installed here wait for the interest of the one that drives the fleet (bms/README.md).
+handover.grace.ms=10000
+EOF
   else # a share written at an earlier start with --fleet goes; a file of the user's stays
-    for f in "$dir/eu.brain.iot.edge.cfg" "$dir/eu.brain.iot.federation.lease.cfg"; do
+    for f in "$dir/eu.brain.iot.edge.cfg" "$dir/eu.brain.iot.federation.lease.cfg" "$dir/eu.brain.iot.bms.cfg"; do
       if head -n 1 "$f" 2>/dev/null | grep -q '^# Written by node/bin/fabric-nodes.sh'; then rm -f "$f"; fi
     done
   fi

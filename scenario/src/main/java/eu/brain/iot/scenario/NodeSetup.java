@@ -26,6 +26,14 @@ final class NodeSetup {
     static final String EDGE_PID = "eu.brain.iot.edge";
     static final String FEDERATION_PID = "eu.brain.iot.federation";
     static final String LEASE_PID = "eu.brain.iot.federation.lease";
+    static final String BMS_PID = "eu.brain.iot.bms";
+    /**
+     * How long a node sharing the fleet holds the events that had a behaviour installed and that it does not take
+     * (BMS {@code handover.grace.ms}): the robot behaviour of every node but one stands by, so the first robot events
+     * of a node wait for the interest of the one that drives the fleet (decided within 6 s, FleetLeadership) and
+     * reach it, rather than being given up.
+     */
+    static final long SHARED_FLEET_HANDOVER_GRACE_MS = 10_000;
     /** A device lease holds this long after it was sent (wall ms; federation/README.md, "Device leases"). */
     static final long LEASE_MS = Judge.DEFAULT_LEASE_MS;
     /** A node renews its lease this often (wall ms). */
@@ -83,6 +91,8 @@ final class NodeSetup {
         }
         if (node.shared()) {
             writeCfg(dir.resolve(LEASE_PID + ".cfg"), lease());
+            writeCfg(dir.resolve(BMS_PID + ".cfg"), Map.<String, Object>of("handover.grace.ms",
+                    SHARED_FLEET_HANDOVER_GRACE_MS));
         }
         for (Path extra : o.nodeConfigs()) {
             Files.copy(extra, dir.resolve(extra.getFileName()), StandardCopyOption.REPLACE_EXISTING);

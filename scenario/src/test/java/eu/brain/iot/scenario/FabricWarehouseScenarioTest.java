@@ -74,6 +74,11 @@ class FabricWarehouseScenarioTest {
                 "eu.brain.iot.behaviours.door");
         assertThat(node1.path("eventsReceivedFrom").path("node2").asLong()).as("events crossed the fabric")
                 .isPositive();
+        for (String node : List.of("node1", "node2")) {
+            assertThat(Files.readString(run.resolve(node + "/node.log")))
+                    .as("%s: no event given up (a standby's first robot events reach the instance that leads)", node)
+                    .doesNotContain("were given up");
+        }
         String log1 = Files.readString(run.resolve("node1/node.log"));
         assertThat(log1).as("node1's robot behaviour drives the fleet; node1 took node2's robots, then gave them back")
                 .containsPattern("robot fleet: this instance \\(node node1\\) drives the fleet")
