@@ -48,7 +48,8 @@ class FabricWarehouseScenarioTest {
         PrintStream print = new PrintStream(out, true, StandardCharsets.UTF_8);
         int code = Main.run(args.toArray(String[]::new), print, print);
         String text = out.toString(StandardCharsets.UTF_8);
-        String diagnosis = text + "\n--- node1.log (tail) ---\n" + PaperWarehouseScenarioTest.tail(run.resolve("node1/node.log"))
+        String diagnosis = text
+                + "\n--- node1.log (tail) ---\n" + PaperWarehouseScenarioTest.tail(run.resolve("node1/node.log"))
                 + "\n--- node2.log (tail) ---\n" + PaperWarehouseScenarioTest.tail(run.resolve("node2/node.log"));
 
         assertThat(code).as(diagnosis).isZero();

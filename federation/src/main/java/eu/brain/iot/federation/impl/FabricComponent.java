@@ -55,8 +55,9 @@ import eu.brain.iot.federation.monitoring.api.FabricStatus;
  * the node's {@link FabricMonitor} too (this node, its connection and every other node it knows; see {@link Monitor}).
  * <p>
  * A node without a usable key or state folder does not join: the component stays active with no fabric node and says
- * why (log, {@code fabric:nodes}, {@link FabricMonitor}). Threads: SCR's (activation), the framework's service events (the tracker, which
- * hands the interest to the fabric node's own thread), and the fabric node's (see {@link FabricNode}).
+ * why (log, {@code fabric:nodes}, {@link FabricMonitor}). Threads: SCR's (activation), the framework's service events
+ * (the tracker, which hands the interest to the fabric node's own thread), and the fabric node's (see
+ * {@link FabricNode}).
  */
 @Component(service = { FabricComponent.class, FabricMonitor.class }, configurationPid = FabricConfig.PID,
         configurationPolicy = ConfigurationPolicy.REQUIRE, immediate = true)

@@ -17,8 +17,8 @@ import java.util.function.Supplier;
  * so that a client of the broker without the key cannot add names to the table of nodes.
  * <p>
  * Logging, per claimed node (per topic for this node's own): the first refusal of each reason at once, then at most
- * one line every {@link #REPEAT_MILLIS} with the number refused since the last line. At most {@link #MAX_TRACKED_NAMES} unverified
- * names are followed one by one; beyond them they share one line's limit.
+ * one line every {@link #REPEAT_MILLIS} with the number refused since the last line. At most
+ * {@link #MAX_TRACKED_NAMES} unverified names are followed one by one; beyond them they share one line's limit.
  * <p>
  * Alone: when this node has verified no message of any other node {@link #ALONE_AFTER_MILLIS} after it joined, but
  * refused some with a signature that does not match its key, it says once that its own key is most likely not the

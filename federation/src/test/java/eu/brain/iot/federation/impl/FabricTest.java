@@ -245,7 +245,8 @@ class FabricTest extends FabricTestBase {
         String[] report = { "" };
         try {
             await().atMost(DEADLINE).conditionEvaluationListener(c -> report[0] = "received " + seqs.size()
-                    + ", unhandled at a " + a.bus.statistics(MOVED).unhandled + ", at b " + b2.bus.statistics(MOVED).unhandled
+                    + ", unhandled at a " + a.bus.statistics(MOVED).unhandled
+                    + ", at b " + b2.bus.statistics(MOVED).unhandled
                     + ", backlog a->b " + a.statsOf("b") + ", b<-a " + b2.statsOf("a")).until(() -> {
                 seqs.clear();
                 seqs.addAll(r.seqs());

@@ -25,8 +25,9 @@ import eu.brain.iot.behaviours.warehouse.Grid;
  * handover).
  * <p>
  * Threads: the fleet's thread refreshes what this instance shares ({@link #share}), takes what it inherits
- * ({@link #take}) and ends its hold ({@link #holdEnded}); the beat thread reads what is shared ({@link #shared}); the bus's thread records what the leader
- * shared ({@link #heard}). Volatile fields.
+ * ({@link #take}) and ends its hold ({@link #holdEnded}); the beat thread reads what is shared ({@link #shared});
+ * the bus's thread records what the leader shared ({@link #heard}). Volatile fields, but for the hold's (the fleet's
+ * thread's).
  */
 final class ErrandHandover {
 

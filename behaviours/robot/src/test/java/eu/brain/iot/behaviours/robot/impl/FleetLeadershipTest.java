@@ -88,7 +88,8 @@ class FleetLeadershipTest {
         Recorded bus = new Recorded();
         FleetLeadership leader = new FleetLeadership(bus, wholeFleet(), null);
         Recorded standbyBus = new Recorded();
-        FleetLeadership standby = new FleetLeadership(standbyBus, new Ownership("node2", Set.of("robot1"), Set.of("robot1", "robot2")), null);
+        FleetLeadership standby = new FleetLeadership(standbyBus,
+                new Ownership("node2", Set.of("robot1"), Set.of("robot1", "robot2")), null);
         try {
             leader.handover().share(() -> "robot1 1,1 1 TO_DOCK - - -\n");
             await().atMost(DEADLINE).until(() -> bus.beats().stream().anyMatch(b -> b.errands != null
