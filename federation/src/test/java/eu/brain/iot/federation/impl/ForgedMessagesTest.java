@@ -8,12 +8,6 @@ import java.nio.file.Path;
 import java.time.Duration;
 import java.util.List;
 
-import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
-import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
-import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
-import org.eclipse.paho.mqttv5.common.MqttMessage;
-import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
-import org.eclipse.paho.mqttv5.common.packet.UserProperty;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.params.ParameterizedTest;
 import org.junit.jupiter.params.provider.EnumSource;
@@ -35,7 +29,7 @@ class ForgedMessagesTest extends FabricTestBase {
     /** Retained messages of one node an attacker removes: its status and its interest. */
     static final int REMOVALS = 2;
 
-    MqttAsyncClient attacker;
+    Intruder attacker;
 
     @Override
     String logPrefix() {
@@ -45,8 +39,7 @@ class ForgedMessagesTest extends FabricTestBase {
     @AfterEach
     void closeAttacker() throws Exception {
         if (attacker != null) {
-            attacker.disconnectForcibly(0, 1, false);
-            attacker.close(true);
+            attacker.close();
         }
     }
 
@@ -173,15 +166,10 @@ class ForgedMessagesTest extends FabricTestBase {
     }
 
     private void connectAttacker() throws Exception {
-        attacker = new MqttAsyncClient(broker.uri(), "intruder", new MemoryPersistence());
-        attacker.connect(new MqttConnectionOptions()).waitForCompletion(15_000);
+        attacker = new Intruder(broker.uri());
     }
 
     private void publish(String topic, byte[] payload, String signature, boolean retained) throws Exception {
-        MqttProperties props = new MqttProperties();
-        if (signature != null) {
-            props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, signature)));
-        }
-        attacker.publish(topic, new MqttMessage(payload, 1, retained, props)).waitForCompletion(15_000);
+        attacker.publish(topic, payload, signature, retained);
     }
 }

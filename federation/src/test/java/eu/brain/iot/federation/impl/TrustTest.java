@@ -11,12 +11,6 @@ import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 
-import org.eclipse.paho.mqttv5.client.MqttAsyncClient;
-import org.eclipse.paho.mqttv5.client.MqttConnectionOptions;
-import org.eclipse.paho.mqttv5.client.persist.MemoryPersistence;
-import org.eclipse.paho.mqttv5.common.MqttMessage;
-import org.eclipse.paho.mqttv5.common.packet.MqttProperties;
-import org.eclipse.paho.mqttv5.common.packet.UserProperty;
 import org.junit.jupiter.api.AfterEach;
 import org.junit.jupiter.api.Assumptions;
 import org.junit.jupiter.api.Test;
@@ -39,7 +33,7 @@ class TrustTest extends FabricTestBase {
 
     TestNode a;
     TestNode b;
-    MqttAsyncClient attacker;
+    Intruder attacker;
 
     @Override
     String logPrefix() {
@@ -49,8 +43,7 @@ class TrustTest extends FabricTestBase {
     @AfterEach
     void closeAttacker() throws Exception {
         if (attacker != null) {
-            attacker.disconnectForcibly(0, 1, false);
-            attacker.close(true);
+            attacker.close();
         }
     }
 
@@ -85,8 +78,7 @@ class TrustTest extends FabricTestBase {
         byte[] replayed = wire.batch("a", "b", epoch, now,
                 List.of(wire.event(1, MOVED, List.of(MOVED), Map.of("robotId", "again", "seq", 1))));
 
-        attacker = new MqttAsyncClient(broker.uri(), "intruder", new MemoryPersistence());
-        attacker.connect(new MqttConnectionOptions()).waitForCompletion(15_000);
+        attacker = new Intruder(broker.uri());
         publish(topic, forged, null);
         publish(topic, forged, wrong.sign(topic, forged));
         publish(topic, old, right.sign(topic, old));
@@ -141,10 +133,6 @@ class TrustTest extends FabricTestBase {
     }
 
     private void publish(String topic, byte[] payload, String signature) throws Exception {
-        MqttProperties props = new MqttProperties();
-        if (signature != null) {
-            props.setUserProperties(List.of(new UserProperty(MqttLink.SIG, signature)));
-        }
-        attacker.publish(topic, new MqttMessage(payload, 1, false, props)).waitForCompletion(15_000);
+        attacker.publish(topic, payload, signature, false);
     }
 }
