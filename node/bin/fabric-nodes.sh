@@ -131,18 +131,22 @@ if [[ -z $broker_uri ]] && answers 127.0.0.1 "$broker_port"; then
     "with --broker=tcp://127.0.0.1:$broker_port, or give the embedded broker another port with --broker-port=N" >&2
   exit 1
 fi
+# http_port_hint: what to do about a taken REST port
+http_port_hint() {
+  if (( nodes > 1 )); then
+    echo "choose other ports with --http-port=N (node K gets N+K-1; now N is $http_base)"
+  else
+    echo "choose another with --http-port=N"
+  fi
+}
+
 # every node's REST port (node K's is the --http-port plus K-1): a node on a taken one would run without its REST API
 # and dashboard, and the port would lead to another program's
 for k in $(seq 1 "$nodes"); do
   port=$((http_base + k - 1))
   if answers 127.0.0.1 "$port"; then
-    if (( nodes > 1 )); then
-      hint="choose other ports with --http-port=N (node K gets N+K-1; now N is $http_base)"
-    else
-      hint="choose another with --http-port=N"
-    fi
     echo "fabric-nodes: port $port of 127.0.0.1, for $(node_name "$k")'s REST API and dashboard, is taken (another" \
-      "node or program listens there): $hint" >&2
+      "node or program listens there): $(http_port_hint)" >&2
     exit 1
   fi
 done
@@ -327,10 +331,9 @@ for k in $(seq 1 "$nodes"); do
   [[ -n $problems ]] || continue
   taken="$(sed -n 's/.*HTTP server (REST API, dashboard) is not listening: port \([0-9]*\) .*/\1/p' <<<"$problems")"
   if [[ -n $taken ]]; then
-    hint="choose another with --http-port=N"
-    (( nodes > 1 )) && hint="choose other ports with --http-port=N (node K gets N+K-1)"
     echo "fabric-nodes: $name started without its REST API and dashboard: port $taken of its HTTP server was" \
-      "taken when it started (by a program that took it after this script found it free); $hint (log: $log)" >&2
+      "taken when it started (by a program that took it after this script found it free); $(http_port_hint)" \
+      "(log: $log)" >&2
   else
     echo "fabric-nodes: $name started WITH PROBLEMS (log: $log):" >&2
     sed 's/^/  /' <<<"$problems" >&2
