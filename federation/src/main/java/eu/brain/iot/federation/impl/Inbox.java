@@ -34,7 +34,8 @@ import eu.brain.iot.federation.impl.Wire.Event;
  * it are duplicates, and events after it are delivered again: those that were waiting in the bus, which no behaviour
  * had seen, and one caught inside {@code notify} by the crash.
  * <p>
- * Threads: the fabric's inbound thread owns everything but {@link #done} and {@link #doneAhead}, which the bus's
+ * Threads: whoever holds the {@link Inboxes}' monitor (Paho's callback thread taking a batch, the fabric's inbound
+ * thread offering again or acknowledging) owns everything but {@link #done} and {@link #doneAhead}, which the bus's
  * delivery workers update (via {@link #completed}) under this object's monitor.
  */
 final class Inbox {
@@ -56,17 +57,17 @@ final class Inbox {
     private final NodeStats stats;
     private final BooleanSupplier starting;
 
-    /** The publisher's sequence stream (written by the inbound thread under the monitor). */
+    /** The publisher's sequence stream (written under the {@link Inboxes}' monitor and this one). */
     private String epoch;
     /** The next sequence number to offer to the bus. */
     private long next;
     private final TreeMap<Long, Event> early = new TreeMap<>();
-    /** Events taken out of order while starting: none of this node's behaviours took them yet (inbound thread). */
+    /** Events taken out of order while starting: none of this node's behaviours took them yet. */
     private final TreeMap<Long, Event> parked = new TreeMap<>();
     /** Every event up to this one is done (guarded by this). */
     private long done;
     private final TreeSet<Long> doneAhead = new TreeSet<>();
-    /** The window written and acknowledged last (inbound thread). */
+    /** The window written and acknowledged last. */
     private long ackedThrough = -1;
     private boolean ackAgain;
     /** Set when the node stops (guarded by this). */

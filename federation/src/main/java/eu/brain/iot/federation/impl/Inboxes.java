@@ -15,8 +15,10 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * The events other nodes publish to this node: one {@link Inbox} per publisher, the events the bus refused (a full
  * local queue) offered again, and the acknowledgements of the events done.
  * <p>
- * Threads: everything runs on the fabric's inbound thread but {@link #eventsDone}, which the bus's delivery workers
- * call when events are done (it only schedules the acknowledgements on the inbound thread).
+ * Threads: Paho's callback thread hands in the batches ({@link #accept}), the fabric's inbound thread offers again
+ * what the bus refused and sends the acknowledgements; the inboxes are theirs under this object's monitor, which
+ * neither holds while publishing. The bus's delivery workers call {@link #eventsDone} when events are done (it only
+ * schedules the acknowledgements on the inbound thread).
  */
 final class Inboxes {
 
@@ -39,8 +41,11 @@ final class Inboxes {
     private final long madeNanos = System.nanoTime();
 
     private final Map<String, Inbox> inboxes = new ConcurrentHashMap<>();
+    /** Guarded by this. */
     private final Set<Inbox> refused = new LinkedHashSet<>();
     private final AtomicBoolean ackPending = new AtomicBoolean();
+    /** Set when the node stops: no batch is taken after (guarded by this). */
+    private boolean closed;
 
     Inboxes(Settings settings, Host host, Wire wire, Topics topics, MqttLink link, ScheduledExecutorService in) {
         this.settings = settings;
@@ -52,7 +57,10 @@ final class Inboxes {
     }
 
     /** A batch from {@code from}, checked already: its events into the local behaviours, once each, in order. */
-    void accept(String from, Wire.Batch batch, NodeStats stats) throws IOException {
+    synchronized void accept(String from, Wire.Batch batch, NodeStats stats) throws IOException {
+        if (closed) {
+            return; // sent again to this node after its restart: nothing of it was acknowledged
+        }
         Inbox inbox = inboxes.get(from);
         if (inbox == null) {
             inbox = new Inbox(from, settings.stateDir().resolve("inbox").resolve(from + ".window"), stats,
@@ -74,7 +82,10 @@ final class Inboxes {
         }
     }
 
-    private void offerRefused() {
+    private synchronized void offerRefused() {
+        if (closed) {
+            return;
+        }
         List<Inbox> again = new ArrayList<>(refused);
         refused.clear();
         for (Inbox inbox : again) {
@@ -104,7 +115,10 @@ final class Inboxes {
         for (Inbox inbox : inboxes.values()) {
             try {
                 if (!link.publishIfRoom(topics.acks(inbox.publisher(), settings.node()), () -> {
-                    Wire.Ack ack = inbox.ackToSend(settings.node(), now);
+                    Wire.Ack ack;
+                    synchronized (this) {
+                        ack = inbox.ackToSend(settings.node(), now);
+                    }
                     return ack == null ? null : wire.ack(ack);
                 })) {
                     eventsDone(); // the broker has not confirmed earlier publications: the inbound thread goes on
@@ -118,7 +132,8 @@ final class Inboxes {
     }
 
     /** Close every window (first, when the node stops: no window moves after this instant). */
-    void close() {
+    synchronized void close() {
+        closed = true;
         for (Inbox i : inboxes.values()) {
             try {
                 i.close();

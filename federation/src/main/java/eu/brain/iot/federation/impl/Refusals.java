@@ -24,8 +24,8 @@ import java.util.function.Supplier;
  * refused some with a signature that does not match its key, it says once that its own key is most likely not the
  * fabric's.
  * <p>
- * Threads: the fabric's inbound thread calls every method but the counters' readers; the counters are adders,
- * read by the commands on any thread.
+ * Threads: the fabric's inbound thread calls every method but {@link #verified} (Paho's callback thread too) and the
+ * counters' readers; the counters are adders, read by the commands on any thread.
  */
 final class Refusals {
 
@@ -54,8 +54,11 @@ final class Refusals {
     final NodeStats unverified = new NodeStats();
     private final Map<String, Followed> followed = new HashMap<>();
     private int unverifiedFollowed;
-    /** Whether a message of another node passed the signature check since this node started. */
-    private boolean heardVerified;
+    /**
+     * Whether a message of another node passed the signature check since this node started (set by Paho's callback
+     * thread too, for the batches of events it takes).
+     */
+    private volatile boolean heardVerified;
     /** Names whose messages had a signature this node's key does not match. */
     private final Set<String> badSignatureFrom = new TreeSet<>();
     private boolean toldAlone;

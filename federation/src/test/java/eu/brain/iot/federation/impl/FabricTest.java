@@ -108,6 +108,26 @@ class FabricTest extends FabricTestBase {
 
     @ParameterizedTest
     @EnumSource(Broker.Kind.class)
+    void eventsReachTheBusOnTheThreadThatTookThemFromTheBroker(Broker.Kind kind) throws Exception {
+        startBroker(kind);
+        TestNode a = node("a");
+        TestNode b = node("b");
+        Recorder got = new Recorder();
+        b.addBehaviour(got, null, MOVED);
+        awaitInterest(a, b, 1);
+
+        for (int i = 1; i <= 20; i++) {
+            a.bus.deliver(new Moved("r" + i, i));
+        }
+
+        await().atMost(DEADLINE).until(() -> got.got.size() == 20);
+        assertThat(got.seqs()).as("every event once, in publish order").isEqualTo(range(1, 20));
+        assertThat(b.deliveringThreads).as("no hand-off to the fabric's inbound thread between the broker and the "
+                + "bus").isNotEmpty().noneMatch(t -> t.equals("brain-iot-fabric-in"));
+    }
+
+    @ParameterizedTest
+    @EnumSource(Broker.Kind.class)
     void exactlyOnceInOrderAcrossABrokerRestart(Broker.Kind kind) throws Exception {
         startBroker(kind);
         TestNode a = node("a");

@@ -6,6 +6,7 @@ import java.util.ArrayList;
 import java.util.Collection;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.CopyOnWriteArrayList;
 
@@ -31,12 +32,35 @@ final class TestNode implements Host, AutoCloseable {
     private final Map<String, Integer> forwarders = new ConcurrentHashMap<>();
     /** By destination: forwarders removed since the node started. */
     private final Map<String, Integer> forwardersRemoved = new ConcurrentHashMap<>();
+    /** The names of the threads that handed other nodes' events to the bus. */
+    final Set<String> deliveringThreads = ConcurrentHashMap.newKeySet();
+    private final RemoteEvents remoteEvents;
 
     /** A node not started yet: behaviours added now are there before the node joins. */
     TestNode(String name, Settings settings) throws Exception {
         this.name = name;
         this.settings = settings;
         this.bus = new BusCore(1024, 5_000, quietLogger());
+        this.remoteEvents = new RemoteEvents() {
+            @Override
+            public boolean tryDeliverRemote(String type, List<String> types, Map<String, Object> data, Runnable done) {
+                deliveringThreads.add(Thread.currentThread().getName());
+                return bus.tryDeliverRemote(type, types, data, done);
+            }
+
+            @Override
+            public boolean tryDeliverRemoteToBehaviours(String type, List<String> types, Map<String, Object> data,
+                    Runnable done) {
+                deliveringThreads.add(Thread.currentThread().getName());
+                return bus.tryDeliverRemoteToBehaviours(type, types, data, done);
+            }
+
+            @Override
+            public boolean tryDeliverGivenUp(String type, List<String> types, Map<String, Object> data,
+                    long publishedMillis) {
+                return bus.tryDeliverGivenUp(type, types, data, publishedMillis);
+            }
+        };
     }
 
     void start() throws Exception {
@@ -73,7 +97,7 @@ final class TestNode implements Host, AutoCloseable {
 
     @Override
     public RemoteEvents remoteEvents() {
-        return bus;
+        return remoteEvents;
     }
 
     @Override
