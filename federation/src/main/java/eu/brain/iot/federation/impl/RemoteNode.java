@@ -8,8 +8,9 @@ import java.util.Map;
  * Another node of the fabric as this node knows it: its presence, its interest, and the forwarders registered with
  * the local bus for it (one per interest entry, while it is online).
  * <p>
- * Threads: owned by the fabric's inbound thread; the commands read {@link #status} and {@link #interest}, which are
- * volatile and replaced, never changed.
+ * Threads: owned by the fabric's inbound thread (Paho's callback thread may make one, through the node table, for a
+ * batch of events it takes, and counts in its {@link #stats}); the commands read {@link #status} and
+ * {@link #interest}, which are volatile and replaced, never changed.
  */
 final class RemoteNode {
 
