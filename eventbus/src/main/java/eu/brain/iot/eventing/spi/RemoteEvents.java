@@ -28,7 +28,7 @@ public interface RemoteEvents {
      * @param done run once every local behaviour that took the event returned from {@code notify} (or failed, or
      *        went away before it was called); run at once when the event was accepted for no behaviour (held for
      *        the unhandled-event policy, given to consumers of last resort, or counted as unhandled). Runs on a
-     *        delivery worker: it must be quick and must not block
+     *        delivery worker, or on the calling thread when run at once: it must be quick and must not block
      * @return {@code true} when accepted; {@code false} when a behaviour's queue (or the hold) was full: nothing was
      *         queued and {@code done} will not run; offer the event again later
      */

@@ -23,9 +23,9 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * <p>
  * Threads and what they own:
  * <ul>
- * <li>Paho's callback thread: the batches of events for this node that pass every check, into the {@link Inboxes}
- * (which it shares with the inbound thread under their monitor); it queues every other message for the inbound
- * thread;</li>
+ * <li>Paho's callback thread: the batches of events for this node that pass every check ({@link DirectBatches}),
+ * into the {@link Inboxes} (which it shares with the inbound thread under their monitor); it queues every other
+ * message for the inbound thread;</li>
  * <li>{@code brain-iot-fabric-in} (one thread): every other received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
  * {@link Inboxes} and their acknowledgements, the {@link Refusals} and this node's own retained topics
@@ -58,6 +58,7 @@ public final class FabricNode implements AutoCloseable {
     private final Membership membership;
     private final Map<String, Outbox> outboxes = new ConcurrentHashMap<>();
     private final Inboxes inboxes;
+    private final DirectBatches direct;
     private final GivingUp givingUp;
     private final Refusals refusals;
     private final OwnTopics ownTopics;
@@ -105,10 +106,11 @@ public final class FabricNode implements AutoCloseable {
 
                     @Override
                     public void message(String topic, byte[] payload, String signature) {
-                        if (!closed && tookEvents(topic, payload, signature)) {
-                            return;
+                        long at = System.currentTimeMillis(); // both paths judge a message's age alike
+                        if (closed || direct.took(topic, payload, signature, at)) {
+                            return; // once closed, what was not acknowledged is sent again after a restart
                         }
-                        in.execute(() -> onMessage(topic, payload, signature));
+                        in.execute(() -> onMessage(topic, payload, signature, at));
                     }
                 });
         this.refusals = new Refusals(settings, host, System::currentTimeMillis);
@@ -119,6 +121,8 @@ public final class FabricNode implements AutoCloseable {
                 givingUp::wentOffline);
         this.sender = new Sender(settings, wire, topics, link, outboxes.values(), this::node, host, lastConnected);
         this.inboxes = new Inboxes(settings, host, wire, topics, link, in);
+        this.direct = new DirectBatches(settings, key, topics, wire, refusals, inboxes, this::node,
+                this::warnStateNotWritten);
         this.installer = new FabricInstaller(settings, in, new FabricInstaller.Sending() {
             @Override
             public void send(String to, Wire.Install message) throws IOException, InterruptedException {
@@ -263,7 +267,8 @@ public final class FabricNode implements AutoCloseable {
 
     // ---- received messages -----------------------------------------------------------------------------------
 
-    private void onMessage(String topic, byte[] payload, String signature) {
+    /** @param at when the message arrived (epoch milliseconds), against which its age is judged */
+    private void onMessage(String topic, byte[] payload, String signature, long at) {
         Topics.Parsed t = topics.parse(topic);
         if (t == null) {
             return;
@@ -288,8 +293,8 @@ public final class FabricNode implements AutoCloseable {
         NodeStats stats = node(claimed).stats;
         try {
             switch (t.kind()) {
-            case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats, topic);
-            case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats, topic);
+            case Topics.EVENTS -> onBatch(claimed, wire.readBatch(payload), stats, topic, at);
+            case Topics.ACKS -> onAck(claimed, wire.readAck(payload), stats, topic, at);
             case Topics.INTEREST -> {
                 membership.onInterest(claimed, wire.readInterest(payload), stats);
                 installer.membershipChanged(claimed); // after the forwarders: an install waiting for them ends
@@ -298,7 +303,7 @@ public final class FabricNode implements AutoCloseable {
                 installer.membershipChanged(claimed);
                 sender.wake(); // a node back online: what was kept for it goes now
             });
-            case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats, topic);
+            case Topics.INSTALL -> onInstall(claimed, wire.readInstall(payload), stats, topic, at);
             default -> refusals.refused(topic, claimed, Refusals.Reason.MALFORMED, "no such topic", node(claimed));
             }
         } catch (MalformedException e) {
@@ -325,53 +330,14 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
-    /**
-     * Events for this node's behaviours, taken on Paho's callback thread (one hand-off less between the broker and a
-     * behaviour). Only a batch that passes every check is taken here; anything else goes to the inbound thread, which
-     * checks it again and refuses it with its reason.
-     *
-     * @return whether the message was taken
-     */
-    private boolean tookEvents(String topic, byte[] payload, String signature) {
-        Topics.Parsed t = topics.parse(topic);
-        if (t == null || !Topics.EVENTS.equals(t.kind()) || !t.node().equals(settings.node())) {
-            return false;
-        }
-        String from = t.other();
-        if (from == null || !Settings.NAME.matcher(from).matches()
-                || Refusals.check(key, topic, payload, signature) != null) {
-            return false;
-        }
-        Wire.Batch batch;
-        try {
-            batch = wire.readBatch(payload);
-        } catch (MalformedException e) {
-            return false;
-        }
-        if (!batch.from().equals(from) || !batch.to().equals(settings.node()) || !inTime(batch.sent())) {
-            return false;
-        }
-        refusals.verified();
-        try {
-            inboxes.accept(from, batch, node(from).stats);
-        } catch (IOException e) {
-            warnStateNotWritten(e);
-        }
-        return true;
-    }
-
-    private boolean inTime(long sent) {
-        return Math.abs(System.currentTimeMillis() - sent) <= settings.maxAgeMillis();
-    }
-
-    private void warnStateNotWritten(IOException e) {
+    void warnStateNotWritten(Exception e) {
         host.warn("Fabric {}: the state of node {} cannot be written in {}: {}", settings.fabric(), settings.node(),
                 settings.stateDir(), e.getMessage());
     }
 
-    private boolean fresh(String from, long sent, String topic) {
-        long age = System.currentTimeMillis() - sent;
-        if (!inTime(sent)) {
+    private boolean fresh(String from, long sent, String topic, long at) {
+        long age = at - sent;
+        if (!settings.inTime(sent, at)) {
             refusals.refused(topic, from, Refusals.Reason.REPLAYED,
                     age > 0 ? age + " ms ago" : -age + " ms ahead", nodes.get(from));
             return false;
@@ -379,31 +345,31 @@ public final class FabricNode implements AutoCloseable {
         return true;
     }
 
-    private void onBatch(String from, Wire.Batch batch, NodeStats stats, String topic) throws IOException {
+    private void onBatch(String from, Wire.Batch batch, NodeStats stats, String topic, long at) throws IOException {
         if (!batch.from().equals(from) || !batch.to().equals(settings.node())) {
             stats.malformed.increment();
             return;
         }
-        if (!fresh(from, batch.sent(), topic)) {
+        if (!fresh(from, batch.sent(), topic, at)) {
             return;
         }
         inboxes.accept(from, batch, stats);
     }
 
-    private void onInstall(String from, Wire.Install message, NodeStats stats, String topic) {
+    private void onInstall(String from, Wire.Install message, NodeStats stats, String topic, long at) {
         if (!message.from().equals(from) || !message.to().equals(settings.node())) {
             stats.malformed.increment();
-        } else if (fresh(from, message.sent(), topic)) {
+        } else if (fresh(from, message.sent(), topic, at)) {
             installer.received(message);
         }
     }
 
-    private void onAck(String from, Wire.Ack ack, NodeStats stats, String topic) throws IOException {
+    private void onAck(String from, Wire.Ack ack, NodeStats stats, String topic, long at) throws IOException {
         if (!ack.from().equals(from) || !ack.to().equals(settings.node())) {
             stats.malformed.increment();
             return;
         }
-        if (!fresh(from, ack.sent(), topic)) {
+        if (!fresh(from, ack.sent(), topic, at)) {
             return;
         }
         Outbox outbox = outboxes.get(from);

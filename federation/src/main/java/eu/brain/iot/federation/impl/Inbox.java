@@ -35,8 +35,9 @@ import eu.brain.iot.federation.impl.Wire.Event;
  * had seen, and one caught inside {@code notify} by the crash.
  * <p>
  * Threads: whoever holds the {@link Inboxes}' monitor (Paho's callback thread taking a batch, the fabric's inbound
- * thread offering again or acknowledging) owns everything but {@link #done} and {@link #doneAhead}, which the bus's
- * delivery workers update (via {@link #completed}) under this object's monitor.
+ * thread offering again or acknowledging) owns everything but {@link #done} and {@link #doneAhead}, which the
+ * completions update (via {@link #completed}) under this object's monitor: the bus runs them on its delivery workers,
+ * or at once on the thread that offered an event no behaviour takes.
  */
 final class Inbox {
 
@@ -227,11 +228,6 @@ final class Inbox {
         ackedThrough = through;
         ackAgain = false;
         return new Wire.Ack(self, publisher, e, through, now);
-    }
-
-    /** Events waiting for an earlier one, for room in the bus, or for a behaviour of this starting node. */
-    int waiting() {
-        return early.size() + parked.size();
     }
 
     void close() throws IOException {

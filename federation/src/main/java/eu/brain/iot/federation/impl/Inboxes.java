@@ -17,8 +17,9 @@ import java.util.concurrent.atomic.AtomicBoolean;
  * <p>
  * Threads: Paho's callback thread hands in the batches ({@link #accept}), the fabric's inbound thread offers again
  * what the bus refused and sends the acknowledgements; the inboxes are theirs under this object's monitor, which
- * neither holds while publishing. The bus's delivery workers call {@link #eventsDone} when events are done (it only
- * schedules the acknowledgements on the inbound thread).
+ * neither holds while publishing. The events' completions call {@link #eventsDone} when events are done, on the
+ * bus's delivery workers or at once on the thread that offered an event no behaviour takes (it only schedules the
+ * acknowledgements on the inbound thread).
  */
 final class Inboxes {
 
@@ -96,8 +97,8 @@ final class Inboxes {
     }
 
     /**
-     * Called by a delivery worker when events of a publisher are done: acknowledged {@link #ACK_DELAY_MILLIS} later,
-     * with those done meanwhile, on the inbound thread.
+     * Called when events of a publisher are done (see the threads above) or came twice: acknowledged
+     * {@link #ACK_DELAY_MILLIS} later, with those done meanwhile, on the inbound thread.
      */
     private void eventsDone() {
         if (ackPending.compareAndSet(false, true)) {

@@ -52,7 +52,11 @@ final class MqttLink {
     /** Largest packet this node accepts from the broker. */
     static final long MAX_PACKET_BYTES = 16L << 20;
 
-    /** What the link tells its node; called on Paho's threads, must not block. */
+    /**
+     * What the link tells its node; called on Paho's threads. {@link #message} may take a while (it checks and
+     * decodes a batch of events and hands it to the bus, which never waits) but never waits for a publication: the
+     * broker's confirmations, which free the slots {@link #publish} waits for, come on the same thread.
+     */
     interface Listener {
         void connected();
 

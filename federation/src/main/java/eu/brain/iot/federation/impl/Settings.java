@@ -32,6 +32,11 @@ public record Settings(String brokerUri, String fabric, String node, String user
         long sessionExpirySeconds, long resendTimeoutMillis, int maxPending, long maxAgeMillis, int batchMaxEvents,
         long bidMillis, long installTimeoutMillis, long offlineGiveUpMillis) {
 
+    /** @return whether a message signed at {@code sent} is young enough at {@code at} (epoch milliseconds) */
+    boolean inTime(long sent, long at) {
+        return Math.abs(at - sent) <= maxAgeMillis;
+    }
+
     /** Names usable as one MQTT topic level and one file name. */
     static final Pattern NAME = Pattern.compile("[A-Za-z0-9][A-Za-z0-9._-]{0,63}");
 
