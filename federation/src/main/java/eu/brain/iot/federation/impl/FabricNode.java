@@ -28,7 +28,7 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * message for the inbound thread;</li>
  * <li>{@code brain-iot-fabric-in} (one thread): every other received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
- * {@link Inboxes} and their acknowledgements, the {@link Refusals} and this node's own retained topics
+ * {@link Inboxes}' acknowledgements and the events the bus refused for a moment, the {@link Refusals} and this node's own retained topics
  * ({@link OwnTopics}), connection events, the resend check, giving up on the events kept for
  * a node gone for good ({@link GivingUp});</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals and when
@@ -330,7 +330,7 @@ public final class FabricNode implements AutoCloseable {
         }
     }
 
-    void warnStateNotWritten(Exception e) {
+    private void warnStateNotWritten(Exception e) {
         host.warn("Fabric {}: the state of node {} cannot be written in {}: {}", settings.fabric(), settings.node(),
                 settings.stateDir(), e.getMessage());
     }
