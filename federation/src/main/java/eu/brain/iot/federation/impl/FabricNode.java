@@ -28,9 +28,9 @@ import eu.brain.iot.federation.impl.Wire.MalformedException;
  * message for the inbound thread;</li>
  * <li>{@code brain-iot-fabric-in} (one thread): every other received message (checked, then applied), the table of
  * {@link RemoteNode}s and their forwarders, the {@link FabricInstaller}'s questions and orders in flight, the
- * {@link Inboxes}' acknowledgements and the events the bus refused for a moment, the {@link Refusals} and this node's own retained topics
- * ({@link OwnTopics}), connection events, the resend check, giving up on the events kept for
- * a node gone for good ({@link GivingUp});</li>
+ * {@link Inboxes}' acknowledgements and the events the bus refused for a moment, the {@link Refusals} and this
+ * node's own retained topics ({@link OwnTopics}), connection events, the resend check, giving up on the events kept
+ * for a node gone for good ({@link GivingUp});</li>
  * <li>{@code brain-iot-fabric-out} (one thread, the {@link Sender}): writes the {@link Outbox}es' journals and when
  * this node was last connected ({@link LastConnected}), takes batches from the outboxes and publishes them;</li>
  * <li>publishers (on their own threads, when the outbox has room) and the bus's delivery workers call the
