@@ -40,7 +40,8 @@ import org.eclipse.paho.mqttv5.common.packet.UserProperty;
  * <p>
  * Threads: Paho's own threads call {@link Listener}; {@link #connect} is called by the fabric's inbound thread;
  * {@link #publish} by the fabric's sender and inbound threads, and waits while {@link #MAX_IN_FLIGHT} publications
- * are unconfirmed by the broker; {@link #publishIfRoom} (the acknowledgements, on the inbound thread) never waits. {@link #client} and {@link #inFlight} are replaced at each connection.
+ * are unconfirmed by the broker; {@link #publishIfRoom} (the acknowledgements, on the inbound thread) never waits.
+ * {@link #client} and {@link #inFlight} are replaced at each connection.
  */
 final class MqttLink {
 
