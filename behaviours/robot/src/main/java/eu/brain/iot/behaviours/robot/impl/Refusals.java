@@ -49,32 +49,34 @@ final class Refusals {
         this.planAnew = planAnew;
     }
 
-    /** An outcome arrived on the bus: one answering a command of this behaviour's that is a refusal is handled. */
+    /**
+     * An outcome arrived on the bus: one answering a command of this behaviour's that is a refusal is handled; a
+     * command sent again goes out in the refused one's place, before the robot's commands given after it.
+     */
     void outcome(CommandOutcome o) {
-        CommandLedger.Sent sent = commands.answered(o);
-        if (sent == null) {
-            return;
+        CommandLedger.Sent sent = commands.answered(o, refused -> refused(refused, o));
+        if (sent != null && o.accepted) {
+            inARow.remove(sent.command().deviceId);
         }
+    }
+
+    /** @return the command to send again in the refused one's place, or {@code null} for none */
+    private EdgeCommand refused(CommandLedger.Sent sent, CommandOutcome o) {
         String robot = sent.command().deviceId;
-        if (o.accepted) {
-            inARow.remove(robot);
-            return;
-        }
         int n = inARow.merge(robot, 1, Integer::sum);
         LOG.log(System.Logger.Level.WARNING, "{0} refused {1} ({2}): {3} (status {4}); refusal {5} in a row", robot,
                 o.command, sent.why(), o.reason, o.status, n);
         if (sent.command() instanceof CancelMissionCommand) {
-            return; // nothing to cancel: the robot's go-to had ended
+            return null; // nothing to cancel: the robot's go-to had ended
         }
         if (n <= retries) {
-            EdgeCommand again = RobotCommands.again(sent.command());
-            commands.send(again, sent.why() + ", again");
-            return;
+            return RobotCommands.again(sent.command());
         }
         inARow.remove(robot);
         replans.incrementAndGet();
         planAnew.accept(robot);
         LOG.log(System.Logger.Level.WARNING, "{0}: errand planned anew after {1} refusals", robot, n);
+        return null;
     }
 
     /**

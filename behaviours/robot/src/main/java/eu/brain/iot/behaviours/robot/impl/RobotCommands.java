@@ -3,6 +3,7 @@ package eu.brain.iot.behaviours.robot.impl;
 import java.util.ArrayDeque;
 import java.util.HashMap;
 import java.util.Map;
+import java.util.function.Function;
 
 import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -60,6 +61,18 @@ final class RobotCommands {
      * @return what it answered, or {@code null} when it is not one of these commands
      */
     CommandLedger.Sent answered(CommandOutcome o) {
+        return answered(o, refused -> null);
+    }
+
+    /**
+     * An outcome arrived: when it answers one of these commands, the robot's next command goes out; but when it is a
+     * refusal and {@code again} gives a command for it (called outside this object's monitor), that command goes out
+     * in the refused one's place, ahead of those given after it (a place refused, then a go-to home given behind it:
+     * the place is sent again before the robot leaves with its cart).
+     *
+     * @return what it answered, or {@code null} when it is not one of these commands
+     */
+    CommandLedger.Sent answered(CommandOutcome o, Function<CommandLedger.Sent, EdgeCommand> again) {
         CommandLedger.Sent sent = ledger.answered(o);
         if (sent != null) {
             if (o.accepted && o.missionId != null) {
@@ -72,9 +85,24 @@ final class RobotCommands {
                     }
                 }
             }
-            next(sent.command().deviceId);
+            EdgeCommand retry = o.accepted ? null : again.apply(sent);
+            if (retry != null) {
+                instead(retry, sent.why() + ", again");
+            } else {
+                next(sent.command().deviceId);
+            }
         }
         return sent;
+    }
+
+    /** The robot's answered head replaced by {@code command}, published now; those behind it wait for its answer. */
+    private void instead(EdgeCommand command, String why) {
+        synchronized (this) {
+            ArrayDeque<Waiting> q = queues.computeIfAbsent(command.deviceId, k -> new ArrayDeque<>());
+            q.poll();
+            q.addFirst(new Waiting(command, why));
+        }
+        publish(command, why);
     }
 
     /**

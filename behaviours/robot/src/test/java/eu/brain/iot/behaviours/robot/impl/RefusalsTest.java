@@ -13,6 +13,7 @@ import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.api.GoToCommand;
+import eu.brain.iot.edge.api.PlaceCartCommand;
 
 /** A refused command is sent again a few times in a row, then the robot's errand is planned anew. */
 class RefusalsTest {
@@ -77,6 +78,26 @@ class RefusalsTest {
         impatient.expireUnanswered();
         assertThat(plannedAnew).containsExactly("robot3");
         assertThat(ledger.unanswered(0)).isEmpty();
+    }
+
+    @Test
+    void aCommandSentAgainGoesOutBeforeTheOnesGivenAfterIt() {
+        commands.send(to(new PlaceCartCommand(), "robot3"), "placing its cart in storage");
+        GoToCommand home = to(new GoToCommand(), "robot3");
+        home.x = 6;
+        home.y = 1;
+        commands.send(home, "going home"); // waits for the place's answer
+
+        Refusals impatient = new Refusals(commands, ledger, 2, 0, plannedAnew::add);
+        impatient.expireUnanswered(); // its node died with it: no outcome
+        assertThat(bus.sent).as("the place again, not the robot leaving with its cart").hasSize(2);
+        assertThat(last()).isInstanceOf(PlaceCartCommand.class);
+
+        refusals.outcome(outcome(last(), true, 8L));
+        assertThat(bus.sent).hasSize(3);
+        assertThat(last()).isInstanceOf(GoToCommand.class);
+        assertThat(((GoToCommand) last()).y).isEqualTo(1);
+        assertThat(plannedAnew).isEmpty();
     }
 
     @Test
