@@ -1,11 +1,12 @@
 package eu.brain.iot.behaviours.door.impl;
 
+import static eu.brain.iot.behaviours.warehouse.EventInputs.input;
+
 import java.util.HashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
-import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -15,6 +16,7 @@ import org.osgi.service.component.annotations.Reference;
 import eu.brain.iot.behaviours.door.DoorSmartBehaviour;
 import eu.brain.iot.behaviours.events.DoorBehaviorClosed;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
+import eu.brain.iot.behaviours.warehouse.EventInputs;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -57,7 +59,7 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
      * What each consumed event type (the list above: the two must name the same types, DoorInputTest) becomes for the
      * binding thread, made on the bus thread.
      */
-    static final Map<Class<? extends BrainIoTEvent>, Function<BrainIoTEvent, DoorInput>> INPUTS = Map.ofEntries(
+    static final EventInputs<DoorInput> INPUTS = EventInputs.of(
             input(DoorStateChanged.class, d -> new DoorInput.StateChanged(d.doorId, d.state)),
             input(CommandOutcome.class, DoorInput.Outcome::new));
 
@@ -96,7 +98,7 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Override
     public void notify(BrainIoTEvent event) {
-        DoorInput input = inputOf(event);
+        DoorInput input = INPUTS.inputOf(event);
         if (input == null) {
             // cannot happen: the bus delivers only the consumed types (and their subtypes), the table's keys
             if (dropped.add(event.getClass())) {
@@ -108,25 +110,6 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
         thread.execute(() -> input.handle(handler));
     }
 
-    /**
-     * @return the input the event becomes, by its class or the nearest superclass in {@link #INPUTS} (the bus
-     *         delivers the consumed types' subtypes too); null for an event of a type the table does not know
-     */
-    static DoorInput inputOf(BrainIoTEvent event) {
-        for (Class<?> c = event.getClass(); c != null; c = c.getSuperclass()) {
-            Function<BrainIoTEvent, DoorInput> make = INPUTS.get(c);
-            if (make != null) {
-                return make.apply(event);
-            }
-        }
-        return null;
-    }
-
-    /** An entry of {@link #INPUTS}: events of {@code type} become {@code make}'s input. */
-    private static <E extends BrainIoTEvent> Map.Entry<Class<? extends BrainIoTEvent>,
-            Function<BrainIoTEvent, DoorInput>> input(Class<E> type, Function<E, DoorInput> make) {
-        return Map.entry(type, event -> make.apply(type.cast(event)));
-    }
 
     /** The binding thread's treatment of each kind of input. */
     private final class InputHandler implements DoorInput.Handler {

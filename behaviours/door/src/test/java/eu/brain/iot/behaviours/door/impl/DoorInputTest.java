@@ -29,7 +29,7 @@ class DoorInputTest {
 
     @Test
     void theTableHoldsExactlyTheConsumedTypes() throws Exception {
-        assertThat(DoorBinding.INPUTS.keySet().stream().map(Class::getName))
+        assertThat(DoorBinding.INPUTS.types().stream().map(Class::getName))
                 .containsExactlyInAnyOrderElementsOf(consumed(DoorBinding.class));
     }
 
@@ -39,7 +39,7 @@ class DoorInputTest {
                 "outcome");
         for (String name : consumed(DoorBinding.class)) {
             BrainIoTEvent event = (BrainIoTEvent) Class.forName(name).getConstructor().newInstance();
-            assertThat(handledBy(DoorBinding.inputOf(event))).as(name)
+            assertThat(handledBy(DoorBinding.INPUTS.inputOf(event))).as(name)
                     .containsExactly(handledBy.get(event.getClass()));
         }
     }
@@ -50,10 +50,10 @@ class DoorInputTest {
         changed.doorId = "door1";
         changed.state = "closed";
         changed.previousState = "closing";
-        assertThat(DoorBinding.inputOf(changed)).isEqualTo(new DoorInput.StateChanged("door1", "closed"));
+        assertThat(DoorBinding.INPUTS.inputOf(changed)).isEqualTo(new DoorInput.StateChanged("door1", "closed"));
         CommandOutcome outcome = new CommandOutcome();
-        assertThat(DoorBinding.inputOf(outcome)).isEqualTo(new DoorInput.Outcome(outcome));
-        assertThat(DoorBinding.inputOf(new BrainIoTEvent() {
+        assertThat(DoorBinding.INPUTS.inputOf(outcome)).isEqualTo(new DoorInput.Outcome(outcome));
+        assertThat(DoorBinding.INPUTS.inputOf(new BrainIoTEvent() {
         })).isNull();
     }
 

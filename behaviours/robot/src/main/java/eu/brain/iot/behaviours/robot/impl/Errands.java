@@ -449,6 +449,12 @@ final class Errands {
         return next;
     }
 
+    /** Going home, it still carries its cart (the place was lost): not delivered; it carries it to storage again. */
+    void carryBack(String robot, String cart) {
+        delivered--;
+        errands.put(robot, new Errand(robot, Leg.TO_STORAGE, cart, null, null, of(robot).dock()));
+    }
+
     /** The robot is back at its dock: no errand. */
     void docked(String robot) {
         errands.remove(robot);

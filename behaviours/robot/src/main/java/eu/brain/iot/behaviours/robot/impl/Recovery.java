@@ -18,9 +18,12 @@ import eu.brain.iot.behaviours.warehouse.RobotState;
  * the table);</li>
  * <li>carrying a cart without a storage cell yet: it asks again ({@link Fix#GO_ON});</li>
  * <li>idle before its errand's goal, or without an errand while a cart waits (a go-to cancelled, lost, refused or never
- * sent, the end of a leg): it goes on ({@link Fix#GO_ON}; a go-to is never sent twice).</li>
+ * sent, the end of a leg): it goes on ({@link Fix#GO_ON}; a go-to is never sent twice);</li>
+ * <li>going home carrying a cart (its place was refused once too often, or failed, or went with a node that died):
+ * it carries the cart to storage again ({@link Fix#CARRY_BACK}).</li>
  * </ul>
- * These hold in the model's UNLOAD place; going home (STORAGE, DOCKING) only the last applies. Stateless: any thread.
+ * These hold in the model's UNLOAD place; going home, in STORAGE, the last two, in DOCKING going on home (the model
+ * stays there only once it has lifted all its carts). Stateless: any thread.
  */
 final class Recovery {
 
@@ -29,7 +32,12 @@ final class Recovery {
         /** Report the cart in front of it ({@code fromUnloadObstacle}, inFrontOfCart): the model lifts it again. */
         THROUGH_CART,
         /** Go on with the errand ({@link RobotFleet#resume}), for the reason given. */
-        GO_ON
+        GO_ON,
+        /**
+         * Carry the cart to storage again ({@link Errands#carryBack}): the model, past STORAGE already, goes through
+         * CART as for {@link #THROUGH_CART}, and puts the cart down again at its new storage cell.
+         */
+        CARRY_BACK
     }
 
     /** A fix and why (the reason goes to {@link RobotFleet#resume} and its log). */
@@ -46,10 +54,16 @@ final class Recovery {
      * @param cartOnFloor   whether the cart its errand says it carries stands on the floor, put down by it
      *                      ({@link RobotFleet#cartPutDown}; asked only when the errand carries one)
      * @param workLeft      whether a cart on the floor waits for a robot (asked only for a robot without a goal)
+     * @param placeUnseen   whether a place sent to the robot has not shown in the device model yet
+     *                      ({@link RobotFleet#placeUnseen}; asked only for a robot going home carrying a cart)
      * @return the fix, or empty when the robot is on its errand (the normal moves apply)
      */
     static Optional<Step> inUnload(RobotState s, Errands.Errand e, boolean modelCarrying, BooleanSupplier cartOnFloor,
-            BooleanSupplier workLeft) {
+            BooleanSupplier workLeft, BooleanSupplier placeUnseen) {
+        Optional<Step> back = carryingHome(s, e, placeUnseen);
+        if (back.isPresent()) {
+            return back;
+        }
         boolean fetching = e.leg() == Errands.Leg.TO_STORAGE || e.leg() == Errands.Leg.TO_CART;
         if (fetching && s.carrying() && !modelCarrying) {
             return Optional.of(new Step(Fix.THROUGH_CART, "taken over carrying its cart"));
@@ -70,6 +84,17 @@ final class Recovery {
         Cell goal = e.goal();
         if (s.idle() && (goal != null ? !s.cell().equals(goal) : workLeft.getAsBoolean())) {
             return Optional.of(new Step(Fix.GO_ON, "idle before its goal"));
+        }
+        return Optional.empty();
+    }
+
+    /**
+     * @return carrying the cart back, for a robot going home that stands idle with a cart and no place sent to it
+     *         still to show: the place went with a refusal, a failed mission or a node that died
+     */
+    static Optional<Step> carryingHome(RobotState s, Errands.Errand e, BooleanSupplier placeUnseen) {
+        if (e.leg() == Errands.Leg.TO_DOCK && s.idle() && s.carrying() && !placeUnseen.getAsBoolean()) {
+            return Optional.of(new Step(Fix.CARRY_BACK, "going home carrying " + s.cart()));
         }
         return Optional.empty();
     }

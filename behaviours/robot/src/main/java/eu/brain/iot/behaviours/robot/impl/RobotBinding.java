@@ -1,5 +1,7 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import static eu.brain.iot.behaviours.warehouse.EventInputs.input;
+
 import java.util.HashMap;
 import java.util.HashSet;
 import java.util.List;
@@ -9,7 +11,6 @@ import java.util.Set;
 import java.util.concurrent.ConcurrentHashMap;
 import java.util.concurrent.Future;
 import java.util.concurrent.RejectedExecutionException;
-import java.util.function.Function;
 
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
@@ -23,6 +24,7 @@ import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
 import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
+import eu.brain.iot.behaviours.warehouse.EventInputs;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
 import eu.brain.iot.behaviours.warehouse.Grid;
@@ -56,6 +58,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * UNLOAD   s stopped behind a robot (detect 1) for patience polls         fromUnloadObstacle     area(s), isObstacle
  * STORAGE    (the same, on its way home)
  * UNLOAD   e goes for a cart, s stands on it, idle, carries none          fromUnloadObstacle     area(s), inFrontOfCart
+ * UNLOAD   e goes home, s idle with a cart (its place lost): it carries   fromUnloadObstacle     area(s), inFrontOfCart
+ * STORAGE    it to storage again, lifted anew in the model (Recovery)
  * UNLOAD   e carries to storage, s stands on its storage cell, idle       unloadToStorage        inStorage, 0
  * STORAGE  e goes home, s stands on its dock, idle                        storageToDocking       inDocking, 0
  * UNLOAD     (the same, when it went home through a resolved collision)
@@ -66,7 +70,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * </pre>
  *
  * The rows that bring a robot back onto its errand (taken over carrying a cart, a cart on the floor, no storage cell
- * yet, idle before its goal or its dock) are the recovery step ({@link Recovery}), looked at before the normal moves.
+ * yet, idle before its goal or its dock, going home with its cart) are the recovery step ({@link Recovery}), looked
+ * at before the normal moves.
  * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
  * ({@link RobotNames}): every port event names the robot's group, so the generated behaviour drives each robot by its
  * group's copy of Listing 4 (created by the group's first event, an {@code unloadLocation}: until then the binding
@@ -95,7 +100,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
      * What each consumed event type (the list above: the two must name the same types, RobotInputTest) becomes for the
      * binding thread, made on the bus thread.
      */
-    static final Map<Class<? extends BrainIoTEvent>, Function<BrainIoTEvent, RobotInput>> INPUTS = Map.ofEntries(
+    static final EventInputs<RobotInput> INPUTS = EventInputs.of(
             input(RobotPositionChanged.class, p -> new RobotInput.Moved(p.robotId)),
             input(ObstacleDetected.class, o -> new RobotInput.Obstacle(o.robotId, false)),
             input(ObstacleCleared.class, o -> new RobotInput.Obstacle(o.robotId, true)),
@@ -164,7 +169,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     @Override
     public void notify(BrainIoTEvent event) {
         Class<?> type = event.getClass();
-        RobotInput input = inputOf(event);
+        RobotInput input = INPUTS.inputOf(event);
         if (input == null) {
             // cannot happen: the bus delivers only the consumed types (and their subtypes), the table's keys
             if (dropped.add(type)) {
@@ -190,25 +195,6 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         }
     }
 
-    /**
-     * @return the input the event becomes, by its class or the nearest superclass in {@link #INPUTS} (the bus
-     *         delivers the consumed types' subtypes too); null for an event of a type the table does not know
-     */
-    static RobotInput inputOf(BrainIoTEvent event) {
-        for (Class<?> c = event.getClass(); c != null; c = c.getSuperclass()) {
-            Function<BrainIoTEvent, RobotInput> make = INPUTS.get(c);
-            if (make != null) {
-                return make.apply(event);
-            }
-        }
-        return null;
-    }
-
-    /** An entry of {@link #INPUTS}: events of {@code type} become {@code make}'s input. */
-    private static <E extends BrainIoTEvent> Map.Entry<Class<? extends BrainIoTEvent>,
-            Function<BrainIoTEvent, RobotInput>> input(Class<E> type, Function<E, RobotInput> make) {
-        return Map.entry(type, event -> make.apply(type.cast(event)));
-    }
 
     /** The binding thread's treatment of each kind of input. */
     private final class InputHandler implements RobotInput.Handler {
@@ -330,9 +316,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 }
                 Errands.Errand errand = e;
                 Optional<Recovery.Step> fix = Recovery.inUnload(s, e, Boolean.TRUE.equals(data.get("carrying")),
-                        () -> fleet.cartPutDown(s, errand) != null, fleet::workLeft);
+                        () -> fleet.cartPutDown(s, errand) != null, fleet::workLeft, () -> fleet.placeUnseen(s));
                 if (fix.isPresent()) {
-                    recover(in, area, fix.get());
+                    recover(in, s, area, fix.get());
                 } else if (e.leg() == Errands.Leg.TO_CART && s.cell().equals(e.cartCell()) && s.idle()
                         && !s.carrying()) {
                     fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
@@ -340,7 +326,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                         && s.carrying()) {
                     unloadToStorage(in);
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
-                    fleet.docked(robot);
+                    fleet.errands().docked(robot);
                     storageToDocking(in);
                 } else if (moved.remove(robot)) {
                     unloadToUnload(in, area);
@@ -350,11 +336,12 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 if (obstacle(robot, s, in, area, now)) {
                     return;
                 }
-                Optional<Recovery.Step> fix = Recovery.homeward(s, e);
+                Optional<Recovery.Step> fix = Recovery.carryingHome(s, e, () -> fleet.placeUnseen(s))
+                        .or(() -> Recovery.homeward(s, e));
                 if (fix.isPresent()) {
-                    recover(in, area, fix.get()); // where it enters the docking area (DockingWay), or a go-to lost
+                    recover(in, s, area, fix.get()); // where it enters the docking area (DockingWay), a go-to lost
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
-                    fleet.docked(robot);
+                    fleet.errands().docked(robot);
                     storageToDocking(in);
                 }
             }
@@ -362,9 +349,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                 // a robot done with its carts (the model stays in DOCKING) that was sent out of the way goes home
                 Optional<Recovery.Step> fix = Recovery.homeward(s, e);
                 if (fix.isPresent()) {
-                    recover(in, area, fix.get());
+                    recover(in, s, area, fix.get());
                 } else if (e.leg() == Errands.Leg.TO_DOCK && s.cell().equals(e.dock()) && s.idle()) {
-                    fleet.docked(robot);
+                    fleet.errands().docked(robot);
                 }
             }
             default -> {
@@ -374,10 +361,14 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     }
 
     /** The recovery step's fix ({@link Recovery}), applied. */
-    private void recover(Instance in, double area, Recovery.Step step) {
+    private void recover(Instance in, RobotState s, double area, Recovery.Step step) {
         switch (step.fix()) {
             case THROUGH_CART -> fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
             case GO_ON -> fleet.resume(in.robot(), step.why());
+            case CARRY_BACK -> {
+                fleet.carryBack(s, step.why());
+                fromUnloadObstacle(in, area, IN_FRONT_OF_CART);
+            }
         }
     }
 

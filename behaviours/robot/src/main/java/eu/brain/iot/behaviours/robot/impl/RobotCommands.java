@@ -33,6 +33,8 @@ final class RobotCommands {
     private final Map<String, Accepted> lastPick = new HashMap<>();
     /** Per robot: the last go-to it accepted. */
     private final Map<String, Accepted> lastGoTo = new HashMap<>();
+    /** Per robot: the last place it accepted. */
+    private final Map<String, Accepted> lastPlace = new HashMap<>();
 
     /** A mission the robot accepted: the fleet's id of it, and when the answer came. */
     private record Accepted(long missionId, long atNanos) {
@@ -82,6 +84,8 @@ final class RobotCommands {
                         lastPick.put(sent.command().deviceId, accepted);
                     } else if (sent.command() instanceof GoToCommand) {
                         lastGoTo.put(sent.command().deviceId, accepted);
+                    } else if (sent.command() instanceof PlaceCartCommand) {
+                        lastPlace.put(sent.command().deviceId, accepted);
                     }
                 }
             }
@@ -113,6 +117,16 @@ final class RobotCommands {
      */
     synchronized boolean pickUnseen(String robot, Long shownMission) {
         return unseen(robot, PickCartCommand.class, lastPick, shownMission, Long.MAX_VALUE);
+    }
+
+    /**
+     * Whether a place sent to the robot has not shown in the device model yet: it waits for its turn, waits for the
+     * edge's answer, or was accepted as a mission newer than the one the device model shows.
+     *
+     * @param shownMission the robot's mission as the device model shows it ({@code null}: none yet)
+     */
+    synchronized boolean placeUnseen(String robot, Long shownMission) {
+        return unseen(robot, PlaceCartCommand.class, lastPlace, shownMission, Long.MAX_VALUE);
     }
 
     /**

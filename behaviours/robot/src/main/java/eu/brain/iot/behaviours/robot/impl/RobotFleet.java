@@ -28,7 +28,6 @@ import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.CommandOutcome;
-import eu.brain.iot.edge.api.EdgeCommand;
 import eu.brain.iot.edge.api.GoToCommand;
 import eu.brain.iot.edge.api.PickCartCommand;
 import eu.brain.iot.edge.api.PlaceCartCommand;
@@ -312,14 +311,14 @@ public final class RobotFleet {
         CancelMissionCommand cancel = new CancelMissionCommand();
         cancel.deviceId = robot;
         cancel.missionType = RobotState.GOTO;
-        send(cancel, "stepping aside to " + cell);
+        commands.send(cancel, "stepping aside to " + cell);
         sentGoal.remove(robot);
         GoToCommand go = new GoToCommand();
         go.deviceId = robot;
         go.x = cell.x();
         go.y = cell.y();
         goTos.incrementAndGet();
-        send(go, "stepping aside to " + cell);
+        commands.send(go, "stepping aside to " + cell);
     }
 
     /** The robot stands under its cart: lift it, then head for the storage cell it is given. */
@@ -331,7 +330,7 @@ public final class RobotFleet {
         } else {
             PickCartCommand pick = new PickCartCommand();
             pick.deviceId = robot;
-            send(pick, "lifting " + errands.of(robot).cart());
+            commands.send(pick, "lifting " + errands.of(robot).cart());
         }
         Optional<Grid> grid = view.grid();
         if (s.isEmpty() || grid.isEmpty()) {
@@ -356,7 +355,7 @@ public final class RobotFleet {
     void place(String robot) {
         PlaceCartCommand place = new PlaceCartCommand();
         place.deviceId = robot;
-        send(place, "placing its cart in storage");
+        commands.send(place, "placing its cart in storage");
         Errands.Errand e = errands.placed(robot);
         Optional<RobotState> s = view.robot(robot);
         sentGoal.remove(robot);
@@ -364,6 +363,17 @@ public final class RobotFleet {
         if (e.dock() != null && s.isPresent() && grid.isPresent()) {
             goTo(robot, s.get(), homeward(robot, s.get(), e.dock(), grid.get()), "going home");
         }
+    }
+
+    /** @return whether a place sent to the robot has not shown in the device model yet */
+    boolean placeUnseen(RobotState s) {
+        return commands.placeUnseen(s.id(), s.missionId());
+    }
+
+    /** The robot goes home with its cart, its place lost ({@link Recovery#carryingHome}): it carries it back. */
+    void carryBack(RobotState s, String why) {
+        LOG.log(System.Logger.Level.WARNING, "{0} is {1}: it carries it to storage again", s.id(), why);
+        errands.carryBack(s.id(), s.cart());
     }
 
     /** @return whether a cart on the floor outside storage waits for a robot (false until the map is known) */
@@ -381,11 +391,6 @@ public final class RobotFleet {
     boolean mayStart() {
         Optional<Grid> grid = view.grid();
         return grid.isPresent() && errands.waveOpen(grid.get()) && workLeft();
-    }
-
-    /** The robot is docked: its errand is over. */
-    void docked(String robot) {
-        errands.docked(robot);
     }
 
     /** A mission of the robot ended: a go-to to the goal last sent is no longer pending. */
@@ -486,10 +491,6 @@ public final class RobotFleet {
         go.y = goal.y();
         sentGoal.put(robot, new SentGoal(goal, System.nanoTime()));
         goTos.incrementAndGet();
-        send(go, why);
-    }
-
-    private void send(EdgeCommand command, String why) {
-        commands.send(command, why); // in order: the next once the edge answered the one before
+        commands.send(go, why);
     }
 }

@@ -119,6 +119,28 @@ class ErrandsTest {
     }
 
     @Test
+    void aRobotGoingHomeWithTheCartItsPlaceLostCarriesItBackAndItCountsOnceDelivered() {
+        Errands errands = new Errands(6);
+        List<CartState> carts = new ArrayList<>(List.of(new CartState("cart1", new Cell(7, 8), null)));
+        errands.seen("robot1", new Cell(2, 1), true);
+        errands.claim("robot1", new Cell(2, 1), carts, BAND, FLEET).orElseThrow();
+        Cell drop = errands.lifted("robot1", new Cell(7, 8), carriedBy(carts, 0, "robot1"), BAND).orElseThrow().drop();
+        errands.placed("robot1"); // the place is sent, then lost: the robot heads home with cart1
+
+        errands.carryBack("robot1", "cart1");
+        Errands.Errand back = errands.of("robot1");
+        assertThat(back.leg()).isEqualTo(Errands.Leg.TO_STORAGE);
+        assertThat(back.cart()).isEqualTo("cart1");
+        assertThat(back.dock()).as("its dock kept").isEqualTo(new Cell(2, 1));
+        assertThat(errands.delivered()).as("not delivered").isZero();
+        Cell again = errands.lifted("robot1", new Cell(2, 3), carriedBy(carts, 0, "robot1"), BAND).orElseThrow()
+                .drop();
+        assertThat(BAND.area(again)).as("a storage cell again (the first was %s)", drop).isEqualTo(Grid.STORAGE);
+        errands.placed("robot1");
+        assertThat(errands.delivered()).isEqualTo(1);
+    }
+
+    @Test
     void aRobotTakenOverCarryingACartCarriesItToStorageAndGetsAFreeDock() {
         Errands errands = new Errands(6);
         RobotState docked = robot("robot1", new Cell(1, 1), null, null, null);

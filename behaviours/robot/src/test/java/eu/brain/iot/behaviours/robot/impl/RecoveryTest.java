@@ -63,6 +63,25 @@ class RecoveryTest {
                 .isEmpty();
     }
 
+    @Test
+    void aRobotGoingHomeWithItsCartIdleAndNoPlaceToShowCarriesItBack() {
+        RobotState withCart = robot(new Cell(2, 3), true, "cart1");
+        Errands.Errand home = errand(Errands.Leg.TO_DOCK, null);
+        assertThat(Recovery.carryingHome(withCart, home, () -> false)).map(Recovery.Step::fix)
+                .contains(Fix.CARRY_BACK);
+        assertThat(Recovery.carryingHome(withCart, home, () -> false)).map(Recovery.Step::why)
+                .contains("going home carrying cart1");
+        assertThat(Recovery.inUnload(withCart, home, false, () -> false, () -> true, () -> false))
+                .as("in UNLOAD too (home after a resolved meeting)").map(Recovery.Step::fix).contains(Fix.CARRY_BACK);
+        assertThat(Recovery.carryingHome(withCart, home, () -> true)).as("its place still to show").isEmpty();
+        assertThat(Recovery.carryingHome(robot(new Cell(2, 3), false, "cart1"), home, () -> false))
+                .as("moving: the place may run before the go-to home").isEmpty();
+        assertThat(Recovery.carryingHome(robot(new Cell(2, 3), true, null), home, () -> false)).as("empty")
+                .isEmpty();
+        assertThat(Recovery.carryingHome(withCart, errand(Errands.Leg.TO_STORAGE, DROP), () -> false))
+                .as("carrying to storage").isEmpty();
+    }
+
     private static Optional<Fix> fix(RobotState s, Errands.Errand e, boolean modelCarrying, boolean cartOnFloor,
             boolean workLeft) {
         return step(s, e, modelCarrying, cartOnFloor, workLeft).map(Recovery.Step::fix);
@@ -70,7 +89,7 @@ class RecoveryTest {
 
     private static Optional<Recovery.Step> step(RobotState s, Errands.Errand e, boolean modelCarrying,
             boolean cartOnFloor, boolean workLeft) {
-        return Recovery.inUnload(s, e, modelCarrying, () -> cartOnFloor, () -> workLeft);
+        return Recovery.inUnload(s, e, modelCarrying, () -> cartOnFloor, () -> workLeft, () -> false);
     }
 
     private static Errands.Errand errand(Errands.Leg leg, Cell drop) {

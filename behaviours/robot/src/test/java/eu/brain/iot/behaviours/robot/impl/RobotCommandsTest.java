@@ -105,6 +105,25 @@ class RobotCommandsTest {
     }
 
     @Test
+    void aPlaceIsUnseenWhileItWaitsIsUnansweredOrIsNewerThanTheMissionTheDeviceModelShowsButNotOnceRefused() {
+        PlaceCartCommand place = to(new PlaceCartCommand(), "robot1");
+        GoToCommand home = to(new GoToCommand(), "robot1");
+        assertThat(commands.placeUnseen("robot1", 7L)).as("nothing sent").isFalse();
+        commands.send(place, "placing");
+        commands.send(home, "going home");
+        assertThat(commands.placeUnseen("robot1", 7L)).as("sent, not answered").isTrue();
+        commands.answered(outcome(place, true, 8L));
+        assertThat(commands.placeUnseen("robot1", 7L)).as("accepted; the device model shows the go-to before")
+                .isTrue();
+        assertThat(commands.placeUnseen("robot1", 8L)).as("the device model shows the place").isFalse();
+
+        PlaceCartCommand refused = to(new PlaceCartCommand(), "robot2");
+        commands.send(refused, "placing");
+        commands.answered(outcome(refused, false, null));
+        assertThat(commands.placeUnseen("robot2", 3L)).as("refused, not sent again: lost").isFalse();
+    }
+
+    @Test
     void aRefusedPickIsNotUnseenButOneSentAgainIs() {
         PickCartCommand pick = to(new PickCartCommand(), "robot1");
         commands.send(pick, "lifting");

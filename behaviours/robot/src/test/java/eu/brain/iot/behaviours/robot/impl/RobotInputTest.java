@@ -35,7 +35,7 @@ class RobotInputTest {
 
     @Test
     void theTableHoldsExactlyTheConsumedTypes() throws Exception {
-        assertThat(RobotBinding.INPUTS.keySet().stream().map(Class::getName))
+        assertThat(RobotBinding.INPUTS.types().stream().map(Class::getName))
                 .containsExactlyInAnyOrderElementsOf(consumed(RobotBinding.class));
     }
 
@@ -47,7 +47,7 @@ class RobotInputTest {
                 "unreachable", DeviceRecovered.class, "recovered");
         for (String name : consumed(RobotBinding.class)) {
             BrainIoTEvent event = (BrainIoTEvent) Class.forName(name).getConstructor().newInstance();
-            assertThat(handledBy(RobotBinding.inputOf(event))).as(name)
+            assertThat(handledBy(RobotBinding.INPUTS.inputOf(event))).as(name)
                     .containsExactly(handledBy.get(event.getClass()));
         }
     }
@@ -60,26 +60,26 @@ class RobotInputTest {
         failed.goalX = 3;
         failed.goalY = 7;
         failed.reason = "no path";
-        assertThat(RobotBinding.inputOf(failed))
+        assertThat(RobotBinding.INPUTS.inputOf(failed))
                 .isEqualTo(new RobotInput.MissionEnded("robot4", "goto", 3, 7, true, "no path"));
         MissionFinished finished = new MissionFinished();
         finished.robotId = "robot4";
         finished.missionType = "pick";
-        assertThat(RobotBinding.inputOf(finished))
+        assertThat(RobotBinding.INPUTS.inputOf(finished))
                 .isEqualTo(new RobotInput.MissionEnded("robot4", "pick", null, null, false, null));
         ObstacleCleared cleared = new ObstacleCleared();
         cleared.robotId = "robot2";
-        assertThat(RobotBinding.inputOf(cleared)).isEqualTo(new RobotInput.Obstacle("robot2", true));
+        assertThat(RobotBinding.INPUTS.inputOf(cleared)).isEqualTo(new RobotInput.Obstacle("robot2", true));
         DeviceRecovered recovered = new DeviceRecovered();
         recovered.deviceId = "door1";
         recovered.deviceKind = "door";
         recovered.downMillis = 1200;
-        assertThat(RobotBinding.inputOf(recovered)).isEqualTo(new RobotInput.Recovered("door1", "door", 1200));
+        assertThat(RobotBinding.INPUTS.inputOf(recovered)).isEqualTo(new RobotInput.Recovered("door1", "door", 1200));
         // the bus delivers the consumed types' subtypes too
         CommandOutcome outcome = new CommandOutcome() {
         };
-        assertThat(RobotBinding.inputOf(outcome)).isEqualTo(new RobotInput.Outcome(outcome));
-        assertThat(RobotBinding.inputOf(new BrainIoTEvent() {
+        assertThat(RobotBinding.INPUTS.inputOf(outcome)).isEqualTo(new RobotInput.Outcome(outcome));
+        assertThat(RobotBinding.INPUTS.inputOf(new BrainIoTEvent() {
         })).isNull();
     }
 
