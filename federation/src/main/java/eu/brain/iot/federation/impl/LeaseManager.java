@@ -168,7 +168,7 @@ public final class LeaseManager implements SmartBehaviour<DeviceLease> {
         }
         lapsedBefore = lapsed;
         Set<String> share = ownership.share();
-        LeaseTable.Plan plan = table.plan(now, ownership.fleet(), share, ownership.owned());
+        LeaseTable.Plan plan = table.plan(now, ownership.fleet(), share, ownership.owned(), ownership::atRest);
         if (!plan.release().isEmpty()) {
             ownership.release(plan.release());
             LOG.log(System.Logger.Level.INFO, "Device leases of node {0}: released {1}", self, plan.release());

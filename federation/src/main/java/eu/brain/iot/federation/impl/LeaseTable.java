@@ -6,6 +6,7 @@ import java.util.Map;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.TreeSet;
+import java.util.function.Predicate;
 
 /**
  * Which node owns which device of the fleet, decided by every node from the leases it hears, the same way on every
@@ -13,7 +14,11 @@ import java.util.TreeSet;
  * <ul>
  * <li>a device belongs to the alive node whose share holds it (the lowest name if several), else to the alive node
  * at {@code floorMod(id.hashCode(), alive)} in name order (this node counting as alive);</li>
- * <li>a node releases a device that belongs to another node, or that an alive node of a lower name also owns;</li>
+ * <li>a node releases at once a device that an alive node of a lower name also owns; a device that belongs to
+ * another node it hands over at once when the device is at rest (a robot parked idle and empty, a door closed: the
+ * edge's {@code DeviceOwnership.atRest}), the others one at a time, one every half lease period: a device changing
+ * hands is commanded by nobody for a lease period and a quarter (next rule), and robots handed back all at once to a
+ * node started again stood still together in each other's way;</li>
  * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
  * device, or its expiry, comes first, so that no device is commanded by two nodes at once; a device its holder
  * released, or held when its lease lapsed, is taken only a lease period and a quarter after that release or that
@@ -58,6 +63,8 @@ final class LeaseTable {
     private final Map<String, Long> releasedNanos = new TreeMap<>();
     /** When each node's first lease was heard by this table. */
     private final Map<String, Long> firstHeardNanos = new TreeMap<>();
+    /** When this node last handed over a device that was not at rest. */
+    private Long busyHandOverNanos;
 
     /**
      * @param leaseNanos     how long a lease holds; this node takes nothing for that long after it started
@@ -103,15 +110,23 @@ final class LeaseTable {
      * @param fleet   every device of the fleet
      * @param share   the devices this node's configuration gives it
      * @param owned   the devices this node owns now
+     * @param atRest  whether a device this node owns may change hands without interrupting anything
      */
-    Plan plan(long now, Set<String> fleet, Set<String> share, Set<String> owned) {
+    Plan plan(long now, Set<String> fleet, Set<String> share, Set<String> owned, Predicate<String> atRest) {
         List<Lease> alive = alive(now);
         Set<String> release = new TreeSet<>();
+        Set<String> busy = new TreeSet<>();
         for (String d : owned) {
             boolean lowerHolds = alive.stream().anyMatch(l -> l.node().compareTo(self) < 0 && l.owned().contains(d));
-            if (lowerHolds || !self.equals(owner(d, share, alive))) {
+            if (lowerHolds) {
                 release.add(d);
+            } else if (!self.equals(owner(d, share, alive))) {
+                (atRest.test(d) ? release : busy).add(d);
             }
+        }
+        if (!busy.isEmpty() && (busyHandOverNanos == null || now - busyHandOverNanos >= leaseNanos / 2)) {
+            release.add(busy.iterator().next());
+            busyHandOverNanos = now;
         }
         Set<String> take = new TreeSet<>();
         if (now - startedNanos > leaseNanos && everyAliveNodeHeardForALease(alive, now)) {

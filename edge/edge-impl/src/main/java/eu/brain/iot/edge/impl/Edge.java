@@ -149,6 +149,11 @@ final class Edge implements DeviceModel, AutoCloseable {
         return ownership;
     }
 
+    /** @return whether this node owns the device and it is at rest ({@link Resting}) */
+    boolean atRest(String deviceId) {
+        return ownership.owns(deviceId) && provider(deviceId).map(Resting::atRest).orElse(false);
+    }
+
     PollStats.Snapshot pollStats() {
         return poller.stats().snapshot();
     }

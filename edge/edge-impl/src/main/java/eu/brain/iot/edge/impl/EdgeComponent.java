@@ -199,4 +199,9 @@ public final class EdgeComponent implements DeviceModel, SmartBehaviour<BrainIoT
     public Set<String> release(Set<String> deviceIds) {
         return edge.ownership().release(deviceIds);
     }
+
+    @Override
+    public boolean atRest(String deviceId) {
+        return edge.atRest(deviceId);
+    }
 }

@@ -168,6 +168,21 @@ class SharedFleetTest {
     }
 
     @Test
+    void aParkedIdleRobotAndAClosedDoorAreAtRestOnTheirOwnerOnlyAndARobotOnAMissionIsNot() {
+        awaitWholeFleetOnBoth();
+        assertThat(node2.atRest("robot1")).as("docked, idle, empty").isTrue();
+        assertThat(node1.atRest("door1")).as("closed").isTrue();
+        assertThat(node1.atRest("robot1")).as("node2's").isFalse();
+        GoToCommand go = new GoToCommand();
+        go.deviceId = "robot1";
+        go.commandId = "c-5";
+        go.x = 2; // straight down from its dock (2,1)
+        go.y = 4;
+        assertThat(node2.execute(go, false).orElseThrow().join().accepted).isTrue();
+        await("robot1 on its mission, as its owner shows it").atMost(DEADLINE).until(() -> !node2.atRest("robot1"));
+    }
+
+    @Test
     void aCommandFromAnotherNodeForADeviceThisNodeDoesNotHaveHasNoOutcomeHere() {
         awaitWholeFleetOnBoth();
         GoToCommand go = new GoToCommand();

@@ -8,10 +8,11 @@
  * {@code position.y}, {@code cart.carriedBy}; kind {@code warehouse}: provider {@code warehouse} with
  * {@code map.name}, {@code map.width}, {@code map.height}, {@code map.rows}, the grid's rows joined by a newline).
  * Since 1.2, which devices this node owns, and their hand-over between nodes
- * ({@link eu.brain.iot.edge.model.api.DeviceOwnership}).
+ * ({@link eu.brain.iot.edge.model.api.DeviceOwnership}); since 1.4, whether a device may change hands without
+ * interrupting anything.
  */
 @Export
-@Version("1.3.0")
+@Version("1.4.0")
 package eu.brain.iot.edge.model.api;
 
 import org.osgi.annotation.bundle.Export;
