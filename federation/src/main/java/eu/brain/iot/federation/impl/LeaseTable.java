@@ -18,7 +18,7 @@ import java.util.function.Predicate;
  * another node it hands over at once when the device is at rest (a robot parked idle and empty, a door closed: the
  * edge's {@code DeviceOwnership.atRest}), the others one at a time, one every half lease period: a device changing
  * hands is commanded by nobody for a lease period and a quarter (next rule), and robots handed back all at once to a
- * node started again stood still together in each other's way;</li>
+ * node started again would stand still together in each other's way;</li>
  * <li>a node takes a device that belongs to it once no alive node's lease lists it: the holder's lease without the
  * device, or its expiry, comes first, so that no device is commanded by two nodes at once; a device its holder
  * released, or held when its lease lapsed, is taken only a lease period and a quarter after that release or that
