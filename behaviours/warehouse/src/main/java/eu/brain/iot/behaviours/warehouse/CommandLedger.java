@@ -80,10 +80,21 @@ public final class CommandLedger {
      *         fabric, the node that owned the device may have died with the command)
      */
     public List<String> unanswered(long olderThanNanos) {
+        return unanswered(null, olderThanNanos);
+    }
+
+    /**
+     * @param deviceId       the device the commands were sent to; {@code null}: any device
+     * @param olderThanNanos how long ago, at least, the command was published
+     * @return the commandIds of the commands to the device still without an outcome that long after they were
+     *         published
+     */
+    public List<String> unanswered(String deviceId, long olderThanNanos) {
         long now = System.nanoTime();
         List<String> late = new ArrayList<>();
         sentAt.forEach((id, at) -> {
-            if (now - at > olderThanNanos) {
+            Sent s = pending.get(id);
+            if (now - at > olderThanNanos && s != null && (deviceId == null || deviceId.equals(s.command().deviceId))) {
                 late.add(id);
             }
         });

@@ -1,6 +1,7 @@
 package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.HashMap;
+import java.util.List;
 import java.util.Map;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
@@ -23,6 +24,11 @@ final class Refusals {
 
     /** Wall time a command's outcome may take (the edge answers within its request timeout, 1 s by default). */
     static final long ANSWER_TIMEOUT_NANOS = TimeUnit.SECONDS.toNanos(4);
+    /**
+     * Wall time without an outcome after which a command to a robot that appeared on another node since counts as lost
+     * (an outcome takes milliseconds; one published just before the hand-over may still be answered by the new owner).
+     */
+    static final long LOST_ON_HAND_OVER_NANOS = TimeUnit.SECONDS.toNanos(1);
 
     private static final System.Logger LOG = System.getLogger(Refusals.class.getName());
 
@@ -85,12 +91,28 @@ final class Refusals {
      * the ledger's any more, and is ignored.
      */
     void expireUnanswered() {
-        for (String id : ledger.unanswered(answerTimeoutNanos)) {
+        expire(ledger.unanswered(answerTimeoutNanos), "no outcome within "
+                + TimeUnit.NANOSECONDS.toMillis(answerTimeoutNanos) + " ms of wall time (the node that owned the robot"
+                + " may have stopped)");
+    }
+
+    /**
+     * The robot appeared on a node that polls it now (a device taken over is announced as on discovery): a command to
+     * it still without an outcome {@link #LOST_ON_HAND_OVER_NANOS} (at most the answer timeout) after it was published
+     * went to the node that owned it before, and counts as refused now rather than at the answer timeout.
+     */
+    void handedOver(String robot) {
+        long lostAfter = Math.min(LOST_ON_HAND_OVER_NANOS, answerTimeoutNanos);
+        expire(ledger.unanswered(robot, lostAfter), "no outcome, and " + robot + " is polled by another node now: the"
+                + " command went to the node that owned it before");
+    }
+
+    private void expire(List<String> commandIds, String reason) {
+        for (String id : commandIds) {
             CommandOutcome lost = new CommandOutcome();
             lost.commandId = id;
             lost.accepted = false;
-            lost.reason = "no outcome within " + TimeUnit.NANOSECONDS.toMillis(answerTimeoutNanos)
-                    + " ms of wall time (the node that owned the robot may have stopped)";
+            lost.reason = reason;
             outcome(lost);
         }
     }

@@ -101,7 +101,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
      * binding thread, made on the bus thread.
      */
     static final EventInputs<RobotInput> INPUTS = EventInputs.of(
-            input(RobotPositionChanged.class, p -> new RobotInput.Moved(p.robotId)),
+            input(RobotPositionChanged.class, p -> new RobotInput.Moved(p.robotId, p.previousX == null)),
             input(ObstacleDetected.class, o -> new RobotInput.Obstacle(o.robotId, false)),
             input(ObstacleCleared.class, o -> new RobotInput.Obstacle(o.robotId, true)),
             input(MissionFinished.class,
@@ -216,6 +216,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
         @Override
         public void moved(RobotInput.Moved p) {
+            if (p.appeared()) {
+                fleet.handedOver(p.robot()); // on the node that polls it now: what the one before had is lost
+            }
             moved.add(p.robot());
             evaluate(p.robot());
         }

@@ -450,6 +450,11 @@ public final class RobotFleet {
         refusals.expireUnanswered();
     }
 
+    /** The robot appeared on the node that polls it now: commands it left unanswered went with the one before. */
+    void handedOver(String robot) {
+        refusals.handedOver(robot);
+    }
+
     /** One look of the binding (its thread): the traffic planner plans and sends legs; figures logged now and then. */
     void trafficStep() {
         if (traffic == null) {
@@ -461,18 +466,6 @@ public final class RobotFleet {
             lastFigures = now;
             LOG.log(System.Logger.Level.INFO, traffic.figures(goTos.get() + traffic.counts().reservedGoTos.get()));
         }
-    }
-
-    long commandsSent() {
-        return ledger.sent();
-    }
-
-    long commandsRefused() {
-        return ledger.refused();
-    }
-
-    long replans() {
-        return refusals.replans();
     }
 
     private void goTo(String robot, RobotState s, Cell goal, String why) {

@@ -50,8 +50,11 @@ sealed interface RobotInput {
         }
     }
 
-    /** The robot's position or state changed ({@code RobotPositionChanged}). */
-    record Moved(String robot) implements RobotInput {
+    /**
+     * The robot's position or state changed ({@code RobotPositionChanged}); {@code appeared}: without a previous cell,
+     * the robot was discovered, or taken over by the node that polls it now.
+     */
+    record Moved(String robot, boolean appeared) implements RobotInput {
         @Override
         public void handle(Handler handler) {
             handler.moved(this);

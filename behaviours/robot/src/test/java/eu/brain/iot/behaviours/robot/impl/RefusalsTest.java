@@ -81,6 +81,21 @@ class RefusalsTest {
     }
 
     @Test
+    void aRobotThatAppearedOnAnotherNodeHasItsCommandsLeftWithoutOutcomeSentAgainAtOnce() {
+        commands.send(to(new GoToCommand(), "robot3"), "a leg, to the node that let robot3 go");
+        commands.send(to(new GoToCommand(), "robot1"), "a leg");
+        refusals.handedOver("robot3");
+        assertThat(bus.sent).as("published just now: its outcome may still come").hasSize(2);
+
+        Refusals impatient = new Refusals(commands, ledger, 2, 0, plannedAnew::add);
+        impatient.handedOver("robot3");
+        assertThat(bus.sent).as("robot3's leg again, to its new owner").hasSize(3);
+        assertThat(last().deviceId).isEqualTo("robot3");
+        assertThat(ledger.unanswered("robot1", 0)).as("robot1's leg is left alone").hasSize(1);
+        assertThat(plannedAnew).isEmpty();
+    }
+
+    @Test
     void aCommandSentAgainGoesOutBeforeTheOnesGivenAfterIt() {
         commands.send(to(new PlaceCartCommand(), "robot3"), "placing its cart in storage");
         GoToCommand home = to(new GoToCommand(), "robot3");

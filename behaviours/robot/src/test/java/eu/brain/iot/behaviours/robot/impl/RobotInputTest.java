@@ -67,6 +67,14 @@ class RobotInputTest {
         finished.missionType = "pick";
         assertThat(RobotBinding.INPUTS.inputOf(finished))
                 .isEqualTo(new RobotInput.MissionEnded("robot4", "pick", null, null, false, null));
+        RobotPositionChanged moved = new RobotPositionChanged();
+        moved.robotId = "robot5";
+        moved.previousX = 3;
+        moved.previousY = 4;
+        assertThat(RobotBinding.INPUTS.inputOf(moved)).isEqualTo(new RobotInput.Moved("robot5", false));
+        moved.previousX = null; // discovered, or taken over by the node that polls it now
+        moved.previousY = null;
+        assertThat(RobotBinding.INPUTS.inputOf(moved)).isEqualTo(new RobotInput.Moved("robot5", true));
         ObstacleCleared cleared = new ObstacleCleared();
         cleared.robotId = "robot2";
         assertThat(RobotBinding.INPUTS.inputOf(cleared)).isEqualTo(new RobotInput.Obstacle("robot2", true));
