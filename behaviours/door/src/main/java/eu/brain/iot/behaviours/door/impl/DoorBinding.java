@@ -110,7 +110,6 @@ public final class DoorBinding implements SmartBehaviour<BrainIoTEvent> {
         thread.execute(() -> input.handle(handler));
     }
 
-
     /** The binding thread's treatment of each kind of input. */
     private final class InputHandler implements DoorInput.Handler {
 

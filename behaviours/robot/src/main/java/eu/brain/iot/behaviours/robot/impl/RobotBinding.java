@@ -24,8 +24,8 @@ import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
 import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
-import eu.brain.iot.behaviours.warehouse.EventInputs;
 import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.EventInputs;
 import eu.brain.iot.behaviours.warehouse.FleetView.DoorState;
 import eu.brain.iot.behaviours.warehouse.Grid;
 import eu.brain.iot.behaviours.warehouse.RobotNames;
@@ -194,7 +194,6 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             // the fleet is going away with this binding: nothing is driven any more
         }
     }
-
 
     /** The binding thread's treatment of each kind of input. */
     private final class InputHandler implements RobotInput.Handler {
