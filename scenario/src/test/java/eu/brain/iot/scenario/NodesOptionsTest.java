@@ -50,6 +50,15 @@ class NodesOptionsTest {
     }
 
     @Test
+    void aRunThatKillsANodeIsTwiceAsFastAsRealTimeUnlessTold() throws Exception {
+        assertThat(OptionsParser.parse("--nodes", "2", "--kill-node", "node2@20s").speed())
+                .as("a lease lapsing (2.5 s of wall time) is 5 s of warehouse time").isEqualTo(2);
+        assertThat(OptionsParser.parse("--nodes", "2", "--kill-node", "node2@20s", "--speed", "4").speed())
+                .isEqualTo(4);
+        assertThat(OptionsParser.parse("--nodes", "2").speed()).isEqualTo(OptionsParser.DEFAULT_SPEED);
+    }
+
+    @Test
     void nodesIsOneToTwenty() {
         for (String bad : new String[] {"0", "21", "-1", "two", "1.5"}) {
             assertThatThrownBy(() -> OptionsParser.parse("--nodes", bad))
