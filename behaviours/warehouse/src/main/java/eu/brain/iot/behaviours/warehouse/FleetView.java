@@ -3,7 +3,6 @@ package eu.brain.iot.behaviours.warehouse;
 import java.util.ArrayList;
 import java.util.HashSet;
 import java.util.List;
-import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
 
@@ -113,7 +112,7 @@ public final class FleetView {
         Integer detect = integer(p, "state", "detect");
         Integer gx = integer(p, "mission", "goalX");
         Integer gy = integer(p, "mission", "goalY");
-        Object id = value(p, "mission", "id");
+        Object id = p.value("mission", "id");
         return Optional.of(new RobotState(p.id(), new Cell(x, y), text(p, "position", "heading"),
                 area == null ? 0 : area, "running".equals(text(p, "state", "state")), detect == null ? 0 : detect,
                 text(p, "cart", "cart"), id instanceof Number n ? n.longValue() : null, text(p, "mission", "type"),
@@ -121,18 +120,12 @@ public final class FleetView {
                 p.status() != ResourceStatus.UNREACHABLE && p.status() != ResourceStatus.STALE));
     }
 
-    private static Object value(ProviderSnapshot p, String service, String resource) {
-        Map<String, ResourceValue> s = p.services().get(service);
-        ResourceValue v = s == null ? null : s.get(resource);
-        return v == null ? null : v.value();
-    }
-
     private static Integer integer(ProviderSnapshot p, String service, String resource) {
-        return value(p, service, resource) instanceof Number n ? n.intValue() : null;
+        return p.value(service, resource) instanceof Number n ? n.intValue() : null;
     }
 
     private static String text(ProviderSnapshot p, String service, String resource) {
-        Object v = value(p, service, resource);
+        Object v = p.value(service, resource);
         return v == null ? null : v.toString();
     }
 }

@@ -1,7 +1,5 @@
 package eu.brain.iot.edge.impl;
 
-import java.util.Map;
-
 import org.osgi.service.component.annotations.Activate;
 import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Reference;
@@ -10,7 +8,6 @@ import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.edge.model.api.PollMonitor;
 import eu.brain.iot.edge.model.api.PollStatistics;
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
-import eu.brain.iot.edge.model.api.ResourceValue;
 
 /** Gogo commands: {@code edge:robots}, {@code edge:doors}, {@code edge:provider ID}, {@code edge:stats}. */
 @Component(service = EdgeShell.class, property = { "osgi.command.scope=edge", "osgi.command.function=robots",
@@ -34,9 +31,9 @@ public final class EdgeShell {
             if (!"robot".equals(p.kind())) {
                 continue;
             }
-            Object missionType = value(p, "mission", "type");
+            Object missionType = p.value("mission", "type");
             String mission = missionType == null ? "-"
-                    : missionType + " " + value(p, "mission", "id") + " " + value(p, "mission", "state");
+                    : missionType + " " + p.value("mission", "id") + " " + p.value("mission", "state");
             out.append(String.format("%-12s %5s %5s %-7s %4s %-8s %-6s %-8s %-20s %s%n", p.id(),
                     text(p, "position", "x"), text(p, "position", "y"), text(p, "position", "heading"),
                     text(p, "position", "area"), text(p, "state", "state"), text(p, "state", "detect"),
@@ -90,14 +87,8 @@ public final class EdgeShell {
         return p.reason() == null ? p.status().toString() : p.status() + " (" + p.reason() + ")";
     }
 
-    private static Object value(ProviderSnapshot p, String service, String resource) {
-        Map<String, ResourceValue> resources = p.services().get(service);
-        ResourceValue v = resources == null ? null : resources.get(resource);
-        return v == null ? null : v.value();
-    }
-
     private static String text(ProviderSnapshot p, String service, String resource) {
-        Object v = value(p, service, resource);
+        Object v = p.value(service, resource);
         return v == null ? "-" : v.toString();
     }
 }

@@ -1,11 +1,9 @@
 package eu.brain.iot.edge.impl;
 
-import java.util.Map;
 import java.util.Set;
 
 import eu.brain.iot.edge.model.api.ProviderSnapshot;
 import eu.brain.iot.edge.model.api.ResourceStatus;
-import eu.brain.iot.edge.model.api.ResourceValue;
 
 /**
  * Which of its devices an edge may hand to another node without interrupting anything
@@ -32,17 +30,11 @@ final class Resting {
             return false;
         }
         return switch (p.kind()) {
-            case "robot" -> value(p, "position", "area") instanceof Number area && area.intValue() == DOCKING_AREA
-                    && !BUSY.contains(String.valueOf(value(p, "mission", "state")))
-                    && value(p, "cart", "cart") == null;
-            case "door" -> CLOSED.equals(value(p, "door", "state"));
+            case "robot" -> p.value("position", "area") instanceof Number area && area.intValue() == DOCKING_AREA
+                    && !BUSY.contains(String.valueOf(p.value("mission", "state")))
+                    && p.value("cart", "cart") == null;
+            case "door" -> CLOSED.equals(p.value("door", "state"));
             default -> false;
         };
-    }
-
-    private static Object value(ProviderSnapshot p, String service, String resource) {
-        Map<String, ResourceValue> s = p.services().get(service);
-        ResourceValue v = s == null ? null : s.get(resource);
-        return v == null ? null : v.value();
     }
 }

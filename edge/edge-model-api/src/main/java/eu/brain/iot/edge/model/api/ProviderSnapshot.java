@@ -17,4 +17,14 @@ import java.util.Map;
  */
 public record ProviderSnapshot(String id, String kind, ResourceStatus status, Instant lastPoll, String reason,
         Map<String, Map<String, ResourceValue>> services, Map<String, List<String>> actions) {
+
+    /**
+     * @return the value of one resource, for example {@code value("position", "x")}; {@code null} when the provider
+     *         has no such service or resource, or no value for it yet. Since 1.4.
+     */
+    public Object value(String service, String resource) {
+        Map<String, ResourceValue> resources = services.get(service);
+        ResourceValue v = resources == null ? null : resources.get(resource);
+        return v == null ? null : v.value();
+    }
 }

@@ -9,7 +9,7 @@
  * {@code map.name}, {@code map.width}, {@code map.height}, {@code map.rows}, the grid's rows joined by a newline).
  * Since 1.2, which devices this node owns, and their hand-over between nodes
  * ({@link eu.brain.iot.edge.model.api.DeviceOwnership}); since 1.4, whether a device may change hands without
- * interrupting anything.
+ * interrupting anything, and one resource's value of a provider's snapshot.
  */
 @Export
 @Version("1.4.0")
