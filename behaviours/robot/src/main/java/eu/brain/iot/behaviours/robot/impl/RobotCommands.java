@@ -58,15 +58,6 @@ final class RobotCommands {
     }
 
     /**
-     * An outcome arrived: when it answers one of these commands, the robot's next command goes out.
-     *
-     * @return what it answered, or {@code null} when it is not one of these commands
-     */
-    CommandLedger.Sent answered(CommandOutcome o) {
-        return answered(o, refused -> null);
-    }
-
-    /**
      * An outcome arrived: when it answers one of these commands, the robot's next command goes out; but when it is a
      * refusal and {@code again} gives a command for it (called outside this object's monitor), that command goes out
      * in the refused one's place, ahead of those given after it (a place refused, then a go-to home given behind it:

@@ -73,7 +73,7 @@ class RobotCommandsTest {
         commands.send(other, "elsewhere");
         assertThat(bus.sent).containsExactly(pick, other);
 
-        commands.answered(outcome(pick, true, 7L));
+        commands.answered(outcome(pick, true, 7L), sent -> null);
         assertThat(bus.sent).containsExactly(pick, other, go);
     }
 
@@ -86,9 +86,9 @@ class RobotCommandsTest {
         commands.send(go, "to the cart");
         commands.send(pick, "lifting");
         assertThat(commands.pickUnseen("robot1", 3L)).as("waiting behind the go-to").isTrue();
-        commands.answered(outcome(go, true, 4L));
+        commands.answered(outcome(go, true, 4L), sent -> null);
         assertThat(commands.pickUnseen("robot1", 4L)).as("sent, not answered").isTrue();
-        commands.answered(outcome(pick, true, 5L));
+        commands.answered(outcome(pick, true, 5L), sent -> null);
         assertThat(commands.pickUnseen("robot1", 4L)).as("accepted; the device model shows the go-to still")
                 .isTrue();
         assertThat(commands.pickUnseen("robot1", 5L)).as("the device model shows the pick").isFalse();
@@ -100,7 +100,7 @@ class RobotCommandsTest {
         // the behaviour started again: a place it did not send finished, then a go-to it sent ended
         GoToCommand go = to(new GoToCommand(), "robot2");
         commands.send(go, "carrying cart1 to storage");
-        commands.answered(outcome(go, true, 12L));
+        commands.answered(outcome(go, true, 12L), sent -> null);
         assertThat(commands.pickUnseen("robot2", 12L)).isFalse();
     }
 
@@ -112,14 +112,14 @@ class RobotCommandsTest {
         commands.send(place, "placing");
         commands.send(home, "going home");
         assertThat(commands.placeUnseen("robot1", 7L)).as("sent, not answered").isTrue();
-        commands.answered(outcome(place, true, 8L));
+        commands.answered(outcome(place, true, 8L), sent -> null);
         assertThat(commands.placeUnseen("robot1", 7L)).as("accepted; the device model shows the go-to before")
                 .isTrue();
         assertThat(commands.placeUnseen("robot1", 8L)).as("the device model shows the place").isFalse();
 
         PlaceCartCommand refused = to(new PlaceCartCommand(), "robot2");
         commands.send(refused, "placing");
-        commands.answered(outcome(refused, false, null));
+        commands.answered(outcome(refused, false, null), sent -> null);
         assertThat(commands.placeUnseen("robot2", 3L)).as("refused, not sent again: lost").isFalse();
     }
 
@@ -127,7 +127,7 @@ class RobotCommandsTest {
     void aRefusedPickIsNotUnseenButOneSentAgainIs() {
         PickCartCommand pick = to(new PickCartCommand(), "robot1");
         commands.send(pick, "lifting");
-        commands.answered(outcome(pick, false, null));
+        commands.answered(outcome(pick, false, null), sent -> null);
         assertThat(commands.pickUnseen("robot1", 2L)).isFalse();
         commands.send(to(new PlaceCartCommand(), "robot1"), "placing");
         assertThat(commands.pickUnseen("robot1", 2L)).isFalse();
@@ -148,9 +148,9 @@ class RobotCommandsTest {
         assertThat(ledger.unanswered(java.util.concurrent.TimeUnit.HOURS.toNanos(1))).isEmpty();
         CommandOutcome timedOut = new CommandOutcome();
         timedOut.commandId = lost.commandId; // what Refusals.expireUnanswered makes of it
-        assertThat(queue.answered(timedOut)).isNotNull();
+        assertThat(queue.answered(timedOut, sent -> null)).isNotNull();
         assertThat(bus.sent).containsExactly(lost, next);
         assertThat(ledger.unanswered(0)).containsExactly(next.commandId);
-        assertThat(queue.answered(outcome(lost, true, null))).as("the real outcome, late").isNull();
+        assertThat(queue.answered(outcome(lost, true, null), sent -> null)).as("the real outcome, late").isNull();
     }
 }

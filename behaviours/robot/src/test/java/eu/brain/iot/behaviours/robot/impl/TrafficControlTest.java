@@ -223,7 +223,7 @@ class TrafficControlTest {
         o.commandId = c.commandId;
         o.deviceId = c.deviceId;
         o.accepted = true;
-        commands.answered(o);
+        commands.answered(o, sent -> null);
     }
 
     private static boolean inLine(Cell a, Cell b) {
