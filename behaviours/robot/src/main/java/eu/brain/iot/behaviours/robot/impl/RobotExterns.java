@@ -85,12 +85,20 @@ public class RobotExterns implements RobotBehaviorExterns {
         return f == null ? IN_DOCKING : f.position(robot(robotId));
     }
 
+    /**
+     * Counts a lift against the robot's budget ({@code remaining}, Robot.bip's {@code cart}) only when the robot does
+     * not carry a cart already: the model goes through CART again with the cart it carries when it is taken over
+     * carrying one, or carries one back to storage whose place was lost ({@link Recovery}), and that cart was
+     * counted when it was first lifted.
+     */
     @Override
     public int liftCart(int robotId, int remaining) {
-        int left = Math.max(0, remaining - 1);
         String robot = robot(robotId);
         RobotFleet f = fleet;
-        LOG.log(System.Logger.Level.INFO, "{0} lifts a cart (corkscrew); {1} cart(s) left", robot(robotId), left);
+        boolean again = f != null && f.carries(robot);
+        int left = again ? remaining : Math.max(0, remaining - 1);
+        LOG.log(System.Logger.Level.INFO, again ? "{0} lifts the cart it carries again; {1} cart(s) left"
+                : "{0} lifts a cart (corkscrew); {1} cart(s) left", robot, left);
         if (f != null) {
             f.fromModel(robot(robotId), fleet -> fleet.lift(robot));
         }

@@ -365,6 +365,11 @@ public final class RobotFleet {
         }
     }
 
+    /** @return whether the device model shows the robot carrying a cart (any thread: the model is read only) */
+    boolean carries(String robot) {
+        return view.robot(robot).map(RobotState::carrying).orElse(false);
+    }
+
     /** @return whether a place sent to the robot has not shown in the device model yet */
     boolean placeUnseen(RobotState s) {
         return commands.placeUnseen(s.id(), s.missionId());

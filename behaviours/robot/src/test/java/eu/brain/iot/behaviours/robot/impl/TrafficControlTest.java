@@ -236,7 +236,7 @@ class TrafficControlTest {
     }
 
     /** The edge's device model of one robot on {@link #MAP}. */
-    private static final class Model implements DeviceModel {
+    static final class Model implements DeviceModel {
         private final String map;
         private ProviderSnapshot robot;
         private final List<ProviderSnapshot> carts = new ArrayList<>();
