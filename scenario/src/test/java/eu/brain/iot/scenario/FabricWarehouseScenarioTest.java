@@ -23,6 +23,7 @@ import com.fasterxml.jackson.databind.JsonNode;
  * the behaviours installed on demand and cooperating through the fabric; node2 killed ({@code kill -9}) mid-errand
  * (at 25 s of warehouse time: the robots get their first commands at about 8 s, the last cart reaches storage at
  * about 45 s).
+ * Each robot's model instance runs on its owner (node2's log shows robot1 and robot3 moving, node1's robot2).
  * Its robots go to node1 when node2's lease lapses, the robot behaviour on node1 drives them (it led already, or
  * takes over from node2's), and every cart still reaches storage with every REQ-1/REQ-2 check passing. node2 is
  * started again 6 s later (its own configuration and state): it rejoins, node1 gives its share back a lease period
@@ -85,6 +86,11 @@ class FabricWarehouseScenarioTest {
                 .containsPattern("robot fleet: this instance \\(node node1\\) drives the fleet")
                 .containsPattern("Device leases of node node1: took \\[.*robot(1|3)")
                 .containsPattern("Device leases of node node1: released \\[[^\\]]*robot(1|3)");
+        String first2 = Files.readString(run.resolve("node2/node.log"));
+        assertThat(first2).as("node2 hosts the model instances of its robots, and only those, until it is killed")
+                .containsPattern("robot[13] moves to ").doesNotContain("robot2 moves to");
+        assertThat(log1).as("node1 hosts the model instance of its robot").contains("robot2 moves to ",
+                "robot2 lifts a cart");
         String log2 = Files.readString(run.resolve("node2/node-restarted.log"));
         assertThat(log2).as("node2's robot behaviour, back from its journal, never drives beside node1's")
                 .containsPattern("journal: eu.brain.iot.behaviours.robot \\S+ installed again")

@@ -42,6 +42,16 @@ public final class FleetView {
         return model.provider(id).filter(p -> "robot".equals(p.kind())).flatMap(FleetView::robot);
     }
 
+    /**
+     * @return the node that polls and commands the device, as another node's report names it (the edge's
+     *         {@code fabric/node} resource); empty for a device of this node's own (or unknown)
+     * @since 2.6
+     */
+    public Optional<String> ownerNode(String deviceId) {
+        return model.provider(deviceId).map(p -> p.value("fabric", "node")).filter(String.class::isInstance)
+                .map(String.class::cast);
+    }
+
     /** @return every robot the edge has polled at least once, by id */
     public List<RobotState> robots() {
         List<RobotState> all = new ArrayList<>();

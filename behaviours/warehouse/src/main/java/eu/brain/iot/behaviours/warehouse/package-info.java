@@ -6,7 +6,7 @@
  * depends on the event bus API and the edge's event and device-model APIs.
  */
 @Export
-@Version("2.5.0")
+@Version("2.6.0")
 package eu.brain.iot.behaviours.warehouse;
 
 import org.osgi.annotation.bundle.Export;

@@ -20,9 +20,10 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 /**
  * Whether this robot behaviour instance drives the fleet ({@link #leads}): on a node alone, always; in a fabric
  * whose nodes share the fleet, the instances beat ({@link RobotBehaviourAlive}, every {@value #BEAT_MILLIS} ms of
- * wall time) and the rule of {@link Leadership} picks one. The others stay passive: their binding neither looks at
- * the robots nor publishes, so their model instances stay where they started, and the one that leads next takes the
- * robots over from the device model as a behaviour started again does.
+ * wall time) and the rule of {@link Leadership} picks one. The others' binding neither looks at the robots nor
+ * publishes; their node's model instances go on being driven, through their host ({@link RobotModelHost}), by the
+ * one that leads. The one that leads next continues the errands it shared ({@link ErrandHandover}) with the model
+ * instances as their hosts report them.
  * <p>
  * Threads: the beat thread (one, its own) publishes and decides; the bus's thread records what it hears; both under
  * this object's lock. {@link #leads} reads a volatile.
@@ -40,9 +41,11 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
 
     private static final System.Logger LOG = System.getLogger(FleetLeadership.class.getName());
 
-    /** The components that drive the fleet, enabled only while this instance leads. */
-    static final String[] DRIVING = { "eu.brain.iot.behaviours.robot.RobotSmartBehaviour",
-        RobotExterns.class.getName(), RobotBinding.class.getName() };
+    /**
+     * The components that drive the fleet, enabled only while this instance leads. The model, its extern functions
+     * and its host run on every node: each hosts the instances of the robots its node owns ({@link RobotModelHost}).
+     */
+    static final String[] DRIVING = { RobotBinding.class.getName() };
 
     private final EventBus bus;
     private final DeviceOwnership ownership;
@@ -98,6 +101,16 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
     /** @return the errand table this instance shares while it leads, and inherits when it takes over */
     ErrandHandover handover() {
         return handover;
+    }
+
+    /** @return the name of this instance's node */
+    String nodeName() {
+        return ownership.nodeName();
+    }
+
+    /** @return this instance's id, new at each start, which its beats carry */
+    String instanceId() {
+        return rule.self().id();
     }
 
     /** @return whether this instance drives the fleet now */

@@ -17,12 +17,6 @@ import org.osgi.service.component.annotations.Component;
 import org.osgi.service.component.annotations.Deactivate;
 import org.osgi.service.component.annotations.Reference;
 
-import eu.brain.iot.behaviours.events.RobotBehaviorFromUnloadObstacle;
-import eu.brain.iot.behaviours.events.RobotBehaviorStorageToDocking;
-import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
-import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToStorage;
-import eu.brain.iot.behaviours.events.RobotBehaviorUnloadToUnload;
-import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
 import eu.brain.iot.behaviours.warehouse.BindingThread;
 import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.EventInputs;
@@ -45,8 +39,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 
 /**
  * The binding of the robot model to the edge, declared here and nowhere else: it consumes the edge's robot events
- * and publishes the model's port events, by these rules (P is the robot's place in the model, s what the edge's
- * device model shows of it, e its errand; every poll period, and at once on an edge event about the robot):
+ * and fires the model's ports, by these rules (P is the robot's place in the model, s what the edge's device model
+ * shows of it, e its errand; every poll period, and at once on an edge event about the robot):
  *
  * <pre>
  * P        condition (edge)                                               port event             data
@@ -72,18 +66,25 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * The rows that bring a robot back onto its errand (taken over carrying a cart, a cart on the floor, no storage cell
  * yet, idle before its goal or its dock, going home with its cart) are the recovery step ({@link Recovery}), looked
  * at before the normal moves.
- * Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group {@code g<ceil(K/3)>}
- * ({@link RobotNames}): every port event names the robot's group, so the generated behaviour drives each robot by its
- * group's copy of Listing 4 (created by the group's first event, an {@code unloadLocation}: until then the binding
- * reads the robot's place as START).
+ * A robot's model instance runs on the node that owns the robot ({@link RobotModelHost}): a port is fired by a
+ * {@link RobotModelInput} to every node, and the robot's host answers with a {@link RobotModelReport} of its places,
+ * data and the steps its extern functions asked of the fleet, which this binding applies ({@link ModelMirror});
+ * until that report comes the binding leaves the robot alone, so that it never reads a place of the model without
+ * the errand that goes with it. Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group
+ * {@code g<ceil(K/3)>} ({@link RobotNames}): the generated behaviour drives each robot by its group's copy of
+ * Listing 4 (created by the group's first event, an {@code unloadLocation}: until then the host reports no places
+ * and the binding reads START).
  * Command outcomes go to {@link RobotFleet#outcome}; mission ends clear its pending go-tos. A robot the edge cannot
  * reach gets no event until it answers again, then goes on where it was.
  * <p>
  * Immediate: its looks run on a timer, so it must not wait for a first event to be created (DS delays
- * components with a service until someone gets it).
+ * components with a service until someone gets it). Its first inputs for the node's own robots may come before the
+ * node's {@link RobotModelHost} registered (the components of a bundle start in no set order): the bus then holds them
+ * for it.
  * <p>
- * In a fabric whose nodes share the fleet, only the instance that leads ({@link FleetLeadership}) looks and handles
- * events; the others leave everything as it is.
+ * In a fabric whose nodes share the fleet, only the instance that leads ({@link FleetLeadership}) looks, handles
+ * events and fires ports, for every robot; the others leave everything as it is (their hosts run their node's model
+ * instances).
  * <p>
  * Threads: {@link #notify} (the bus's delivery thread) makes of every event a {@link RobotInput} ({@link #INPUTS}) and
  * hands it to the fleet's thread ({@link RobotFleet#thread()}), which handles it ({@link InputHandler}), owns all of
@@ -92,7 +93,7 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
 @Component(service = SmartBehaviour.class, configurationPid = RobotConfig.PID, immediate = true)
 @SmartBehaviourDefinition(consumed = { RobotPositionChanged.class, ObstacleDetected.class, ObstacleCleared.class,
         MissionFinished.class, MissionFailed.class, CommandOutcome.class, DeviceUnreachable.class,
-        DeviceRecovered.class }, author = "BRAIN-IoT fabric", name = "Robot binding",
+        DeviceRecovered.class, RobotModelReport.class }, author = "BRAIN-IoT fabric", name = "Robot binding",
         description = "Binds the robot model's ports to the edge's robot events")
 public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
@@ -110,7 +111,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
                     m -> new RobotInput.MissionEnded(m.robotId, m.missionType, m.goalX, m.goalY, true, m.reason)),
             input(CommandOutcome.class, RobotInput.Outcome::new),
             input(DeviceUnreachable.class, u -> new RobotInput.Unreachable(u.deviceId, u.reason)),
-            input(DeviceRecovered.class, r -> new RobotInput.Recovered(r.deviceId, r.deviceKind, r.downMillis)));
+            input(DeviceRecovered.class, r -> new RobotInput.Recovered(r.deviceId, r.deviceKind, r.downMillis)),
+            input(RobotModelReport.class, RobotInput.Reported::new));
 
     private static final System.Logger LOG = System.getLogger(RobotBinding.class.getName());
     static final int IS_OBSTACLE = 4;
@@ -118,11 +120,14 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     static final int IN_FRONT_OF_CART = 6;
     /** Cells ahead on a robot's way within which a closed door is reported ({@link #closedDoorOnItsWay}). */
     static final int DOOR_LOOKAHEAD = 3;
+    /** Looks after which a port event no host has answered is given up ({@link ModelMirror}). */
+    static final int LOST_AFTER_LOOKS = 8;
 
     private final RobotFleet fleet;
     private final FleetLeadership leadership;
     private final EventBus bus;
-    private final RobotSmartBehaviour model;
+    /** The robots' model instances as their hosts report them. */
+    private final ModelMirror instances;
     private final long patienceNanos;
     /** The fleet's thread, which owns this binding's state too. */
     private final BindingThread thread;
@@ -146,14 +151,13 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
 
     @Activate
     public RobotBinding(@Reference RobotFleet fleet, @Reference FleetLeadership leadership, @Reference EventBus bus,
-            @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotSmartBehaviour)")
-            SmartBehaviour<?> model, RobotConfig config) {
+            RobotConfig config) {
         this.fleet = fleet;
         this.leadership = leadership;
         this.bus = bus;
-        this.model = (RobotSmartBehaviour) model;
         this.thread = fleet.thread();
         this.pollNanos = thread.periodNanos();
+        this.instances = new ModelMirror(leadership.instanceId(), pollNanos * LOST_AFTER_LOOKS);
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
         this.looks = thread.start(this::safeTick);
         LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
@@ -217,6 +221,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         public void moved(RobotInput.Moved p) {
             if (p.appeared()) {
                 fleet.handedOver(p.robot()); // on the node that polls it now: what the one before had is lost
+                instances.handedOver(p.robot());
             }
             moved.add(p.robot());
             evaluate(p.robot());
@@ -233,6 +238,24 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         @Override
         public void unreachable(RobotInput.Unreachable u) {
             LOG.log(System.Logger.Level.WARNING, "{0} is unreachable ({1}): its errand waits", u.device(), u.reason());
+        }
+
+        /**
+         * Applies the steps; the robot is looked at again at the next look or edge event about it, not at once: a
+         * robot whose model goes round a cycle of transitions (a door ahead still closed: UNLOAD, DOOR, START,
+         * UNLOAD) then takes one step of it per look, not one per report.
+         */
+        @Override
+        public void reported(RobotInput.Reported r) {
+            String robot = r.report().robot;
+            for (ModelStep step : instances.reported(r.report())) {
+                switch (step.kind()) {
+                    case MOVE_ON -> fleet.resume(robot, "its errand");
+                    case STEP_ASIDE -> fleet.sideStep(robot, step.aside());
+                    case LIFT -> fleet.lift(robot);
+                    case PLACE -> fleet.place(robot);
+                }
+            }
         }
 
         @Override
@@ -272,26 +295,21 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
             return;
         }
         RobotState s = state.get();
-        Instance in = new Instance(RobotNames.group(k), RobotNames.component(k), robot);
         fleet.adopt(s);
-        List<String> places;
-        Map<String, Object> data;
-        Errands.Errand e;
-        synchronized (model) {
-            // one consistent look: the model's transitions (and the errand changes their extern functions make) run
-            // under the model's lock, so places, data and errand are read between two transitions, never across one
-            if (fleet.effectsQueued(robot)) {
-                return; // a transition's extern functions still act on the fleet: the errand is not up to date yet
-            }
-            places = places(in);
-            data = data(in);
-            e = fleet.errands().of(robot);
+        long now = System.nanoTime();
+        if (instances.awaiting(robot, now)) {
+            return; // a port event's transitions and the steps they ask for are still to come
         }
+        // an instance not reported yet (its node has no host yet: the first input has one installed) is in START
+        Optional<ModelMirror.Instance> hosted = instances.of(robot).filter(h -> !h.places().isEmpty());
+        List<String> places = hosted.map(ModelMirror.Instance::places).orElse(List.of("START"));
+        Map<String, Object> data = hosted.map(ModelMirror.Instance::data).orElse(Map.of());
+        Errands.Errand e = fleet.errands().of(robot);
+        Instance in = new Instance(robot, places, data);
         standing.look(robot, s.cell(), e, places).ifPresent(line -> LOG.log(System.Logger.Level.WARNING, line));
         if (places.size() != 1) {
             return;
         }
-        long now = System.nanoTime();
         Published last = published.get(robot);
         if (last != null && last.places().equals(places) && last.data().equals(data)
                 && now - last.atNanos() < 4 * pollNanos) {
@@ -425,67 +443,38 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         return false;
     }
 
-    // One method per port event: the generated events share no supertype with their data. Each remembers the
-    // model's state it was published in (see evaluate).
-
-    private void sent(BrainIoTEvent event, Instance in) {
-        published.put(in.robot(), new Published(places(in), data(in), System.nanoTime()));
-        bus.deliver(event);
+    /**
+     * Fires a port of the robot's model instance on its host, the robot's owner as this node's device model shows it,
+     * remembering the state it was fired in.
+     */
+    private void fire(Instance in, ModelPort port, double position, int detect) {
+        long now = System.nanoTime();
+        published.put(in.robot(), new Published(in.places(), in.data(), now));
+        String node = fleet.view().ownerNode(in.robot()).orElse(leadership.nodeName());
+        bus.deliver(instances.input(in.robot(), node, port, position, detect, now));
     }
 
-    /** A robot's component of the model: its group, its name in Listing 4, the fleet's robot. */
-    private record Instance(String group, String component, String robot) {
-    }
-
-    /** @return the instance's places; [START] while its group is not created yet (its first event creates it) */
-    private List<String> places(Instance in) {
-        List<String> places = model.placesOf(in.group(), in.component());
-        return places == null ? List.of("START") : places;
-    }
-
-    private Map<String, Object> data(Instance in) {
-        Map<String, Object> data = model.dataOf(in.group(), in.component());
-        return data == null ? Map.of() : data;
+    /** A robot's model instance as the binding looked at it: its places and data as its host last reported them. */
+    private record Instance(String robot, List<String> places, Map<String, Object> data) {
     }
 
     private void unloadLocation(Instance in, double position) {
-        RobotBehaviorUnloadLocation e = new RobotBehaviorUnloadLocation();
-        e.group = in.group();
-        e.component = in.component();
-        e.position = position;
-        sent(e, in);
+        fire(in, ModelPort.UNLOAD_LOCATION, position, 0);
     }
 
     private void unloadToUnload(Instance in, double position) {
-        RobotBehaviorUnloadToUnload e = new RobotBehaviorUnloadToUnload();
-        e.group = in.group();
-        e.component = in.component();
-        e.position = position;
-        sent(e, in);
+        fire(in, ModelPort.UNLOAD_TO_UNLOAD, position, 0);
     }
 
     private void fromUnloadObstacle(Instance in, double position, int detect) {
-        RobotBehaviorFromUnloadObstacle e = new RobotBehaviorFromUnloadObstacle();
-        e.group = in.group();
-        e.component = in.component();
-        e.position = position;
-        e.detect = detect;
-        sent(e, in);
+        fire(in, ModelPort.FROM_UNLOAD_OBSTACLE, position, detect);
     }
 
     private void unloadToStorage(Instance in) {
-        RobotBehaviorUnloadToStorage e = new RobotBehaviorUnloadToStorage();
-        e.group = in.group();
-        e.component = in.component();
-        e.position = 3;
-        sent(e, in);
+        fire(in, ModelPort.UNLOAD_TO_STORAGE, Grid.STORAGE, 0);
     }
 
     private void storageToDocking(Instance in) {
-        RobotBehaviorStorageToDocking e = new RobotBehaviorStorageToDocking();
-        e.group = in.group();
-        e.component = in.component();
-        e.position = 1;
-        sent(e, in);
+        fire(in, ModelPort.STORAGE_TO_DOCKING, Grid.DOCKING, 0);
     }
 }

@@ -1,6 +1,9 @@
 package eu.brain.iot.behaviours.robot.impl;
 
-import java.util.Set;
+import java.util.ArrayList;
+import java.util.List;
+import java.util.Map;
+import java.util.Optional;
 import java.util.concurrent.ConcurrentHashMap;
 
 import org.osgi.service.component.annotations.Component;
@@ -11,53 +14,78 @@ import org.osgi.service.component.annotations.ReferencePolicyOption;
 
 import eu.brain.iot.behaviours.robot.RobotBehaviorExterns;
 import eu.brain.iot.behaviours.warehouse.Cell;
+import eu.brain.iot.behaviours.warehouse.FleetView;
+import eu.brain.iot.behaviours.warehouse.Grid;
 import eu.brain.iot.behaviours.warehouse.ModelInstance;
+import eu.brain.iot.behaviours.warehouse.RobotState;
+import eu.brain.iot.edge.model.api.DeviceModel;
 
 /**
- * The robot model's extern functions, acting on the fleet through {@link RobotFleet} (edge commands only).
+ * The robot model's extern functions. They read the robot in this node's device model and leave what they ask of the
+ * fleet as {@link ModelStep}s, which the node's {@link RobotModelHost} reports to the instance that drives the fleet.
  * Positions in the model are area codes (Warehouse.bip: inDocking = 1, inUnload = 2, inStorage = 3); the cells are
  * the errand table's. {@code moveTo(id, p)}: {@code p > 0} (an area code) means "go on with your errand";
  * {@code p < 0} is a cell the orchestrator chose for the robot to step aside to, encoded as
  * {@code -(1 + x + 1000 y)} ({@link #sideStep}); {@code p == 0} (not concerned) does nothing.
  * <p>
- * Without an edge there is no {@link RobotFleet}: the functions then only log, and {@code liftCart} counts down as
- * the model expects. On a node (the component) a fleet is expected: a move it cannot make is a warning, once per
- * robot until the fleet is back. {@link #withoutFleet()} is the model on a bus alone (the model-level tests), where
- * no fleet is expected and a move only says what it would do.
+ * {@link #withoutFleet()} is the model on a bus alone (the model-level tests): no device model, no steps kept, a move
+ * only says what it would do.
  * The functions act for the robot of the instance named by the last {@link #bipInstance} on the calling thread:
  * {@code Robot2} of group {@code g4} is robot11 ({@link ModelInstance}).
- * Thread-safe: the fleet reference is volatile, what the functions do to the fleet runs on the fleet's own thread
- * ({@link RobotFleet#fromModel}), the instance is kept per thread, the robots warned about are a concurrent set.
+ * Thread-safe: the device model reference is volatile, the instance is kept per thread, the steps are per robot in a
+ * concurrent map, each robot's list under its own lock.
  */
-@Component(service = RobotBehaviorExterns.class)
+@Component(service = { RobotBehaviorExterns.class, RobotExterns.class })
 public class RobotExterns implements RobotBehaviorExterns {
 
     static final double IN_DOCKING = 1;
+    /** Steps kept per robot until its host reports them; beyond, the oldest are dropped (a host that stopped). */
+    static final int MAX_STEPS = 64;
 
     private static final System.Logger LOG = System.getLogger(RobotExterns.class.getName());
 
-    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
-            policyOption = ReferencePolicyOption.GREEDY)
-    volatile RobotFleet fleet;
+    /** This node's device model as the fleet's view, or null without one. */
+    private volatile Devices devices;
+
+    private record Devices(DeviceModel model, FleetView view) {
+    }
 
     private final ModelInstance instance = new ModelInstance();
-    /** Whether a fleet is expected: a move without one is then a warning. */
-    private final boolean fleetExpected;
-    /** Robots not moved for want of a fleet since it was last there: warned about once each. */
-    private final Set<String> unmoved = ConcurrentHashMap.newKeySet();
+    /** Whether steps are kept for a host: not for the model alone. */
+    private final boolean keepSteps;
+    private final Map<String, List<ModelStep>> steps = new ConcurrentHashMap<>();
 
-    /** The component on a node: it acts on the fleet through the edge. */
+    /** The component on a node: its steps go to the fleet through the node's host. */
     public RobotExterns() {
         this(true);
     }
 
-    private RobotExterns(boolean fleetExpected) {
-        this.fleetExpected = fleetExpected;
+    private RobotExterns(boolean keepSteps) {
+        this.keepSteps = keepSteps;
     }
 
     /** The model on a bus alone, with no fleet by design: moves are only logged as what they would do. */
     public static RobotExterns withoutFleet() {
         return new RobotExterns(false);
+    }
+
+    @Reference(cardinality = ReferenceCardinality.OPTIONAL, policy = ReferencePolicy.DYNAMIC,
+            policyOption = ReferencePolicyOption.GREEDY)
+    void bindDevices(DeviceModel model) {
+        devices = new Devices(model, new FleetView(model));
+    }
+
+    void unbindDevices(DeviceModel model) {
+        Devices d = devices;
+        if (d != null && d.model() == model) { // a greedy replacement binds the new one first
+            devices = null;
+        }
+    }
+
+    /** @return the robot as this node's device model shows it, if it does */
+    private Optional<RobotState> seen(String robot) {
+        Devices d = devices;
+        return d == null ? Optional.empty() : d.view().robot(robot);
     }
 
     @Override
@@ -70,6 +98,30 @@ public class RobotExterns implements RobotBehaviorExterns {
         return instance.robotId(id);
     }
 
+    /** @return the steps asked for the robot since the last call, in order */
+    List<ModelStep> takeSteps(String robot) {
+        List<ModelStep> asked = steps.remove(robot);
+        if (asked == null) {
+            return List.of();
+        }
+        synchronized (asked) {
+            return List.copyOf(asked);
+        }
+    }
+
+    private void step(String robot, ModelStep step) {
+        if (!keepSteps) {
+            return;
+        }
+        List<ModelStep> asked = steps.computeIfAbsent(robot, r -> new ArrayList<>());
+        synchronized (asked) {
+            if (asked.size() >= MAX_STEPS) {
+                asked.remove(0);
+            }
+            asked.add(step);
+        }
+    }
+
     /** @return the cell encoded by a negative resolved position, or {@code null} for a position that is not one */
     static Cell sideStep(double position) {
         if (position >= 0) {
@@ -79,10 +131,20 @@ public class RobotExterns implements RobotBehaviorExterns {
         return new Cell((int) (v % 1000), (int) (v / 1000));
     }
 
+    /**
+     * The robot's area code when it stands in docking, unload or storage; out on the floor elsewhere (the corridor, a
+     * doorway) it counts as unload, so a robot the model first meets away from its dock starts {@code returning}
+     * (Robot.bip's initial transition); docking when the device model does not show it.
+     */
     @Override
     public double getPosition(int robotId) {
-        RobotFleet f = fleet;
-        return f == null ? IN_DOCKING : f.position(robot(robotId));
+        return seen(robot(robotId)).map(s -> (double) (inModelArea(s.area()) ? s.area() : Grid.UNLOAD))
+                .orElse(IN_DOCKING);
+    }
+
+    /** @return whether the area code is one the robot model knows: docking, unload or storage */
+    static boolean inModelArea(int area) {
+        return area == Grid.DOCKING || area == Grid.UNLOAD || area == Grid.STORAGE;
     }
 
     /**
@@ -94,52 +156,30 @@ public class RobotExterns implements RobotBehaviorExterns {
     @Override
     public int liftCart(int robotId, int remaining) {
         String robot = robot(robotId);
-        RobotFleet f = fleet;
-        boolean again = f != null && f.carries(robot);
+        boolean again = seen(robot).map(RobotState::carrying).orElse(false);
         int left = again ? remaining : Math.max(0, remaining - 1);
         LOG.log(System.Logger.Level.INFO, again ? "{0} lifts the cart it carries again; {1} cart(s) left"
                 : "{0} lifts a cart (corkscrew); {1} cart(s) left", robot, left);
-        if (f != null) {
-            f.fromModel(robot(robotId), fleet -> fleet.lift(robot));
-        }
+        step(robot, ModelStep.LIFT);
         return left;
     }
 
     @Override
     public void moveTo(int robotId, double position) {
-        RobotFleet f = fleet;
+        String robot = robot(robotId);
         Cell aside = sideStep(position);
-        LOG.log(System.Logger.Level.INFO, "{0} moves to {1}", robot(robotId),
-                aside != null ? "the side cell " + aside : position);
+        LOG.log(System.Logger.Level.INFO, "{0} moves to {1}", robot, aside != null ? "the side cell " + aside
+                : position);
         if (position == 0) {
             return;
         }
-        if (f == null) {
-            if (fleetExpected && unmoved.add(robot(robotId))) {
-                LOG.log(System.Logger.Level.WARNING, "{0}: no fleet service (no edge, or being replaced): not "
-                        + "moved; the binding sends it on once it is back (further moves of {0} not made are not "
-                        + "logged until then)", robot(robotId));
-            }
-            return;
-        }
-        if (!unmoved.isEmpty()) {
-            unmoved.clear(); // the fleet is back: a new absence is warned about again
-        }
-        String robot = robot(robotId);
-        if (aside != null) {
-            f.fromModel(robot, fleet -> fleet.sideStep(robot, aside));
-        } else {
-            f.fromModel(robot, fleet -> fleet.resume(robot, "its errand"));
-        }
+        step(robot, aside != null ? ModelStep.aside(aside) : ModelStep.MOVE_ON);
     }
 
     @Override
     public void placeCart(int robotId) {
-        RobotFleet f = fleet;
-        LOG.log(System.Logger.Level.INFO, "{0} places its cart in storage", robot(robotId));
-        if (f != null) {
-            String robot = robot(robotId);
-            f.fromModel(robot, fleet -> fleet.place(robot));
-        }
+        String robot = robot(robotId);
+        LOG.log(System.Logger.Level.INFO, "{0} places its cart in storage", robot);
+        step(robot, ModelStep.PLACE);
     }
 }

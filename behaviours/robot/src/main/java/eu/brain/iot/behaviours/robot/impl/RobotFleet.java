@@ -3,15 +3,11 @@ package eu.brain.iot.behaviours.robot.impl;
 import java.io.File;
 import java.util.HashMap;
 import java.util.HashSet;
-import java.util.List;
 import java.util.Map;
 import java.util.Optional;
 import java.util.Set;
-import java.util.concurrent.ConcurrentHashMap;
-import java.util.concurrent.RejectedExecutionException;
 import java.util.concurrent.TimeUnit;
 import java.util.concurrent.atomic.AtomicLong;
-import java.util.function.Consumer;
 
 import org.osgi.framework.BundleContext;
 import org.osgi.service.component.annotations.Activate;
@@ -24,7 +20,6 @@ import eu.brain.iot.behaviours.warehouse.Cell;
 import eu.brain.iot.behaviours.warehouse.CommandLedger;
 import eu.brain.iot.behaviours.warehouse.FleetView;
 import eu.brain.iot.behaviours.warehouse.Grid;
-import eu.brain.iot.behaviours.warehouse.RobotNames;
 import eu.brain.iot.behaviours.warehouse.RobotState;
 import eu.brain.iot.edge.api.CancelMissionCommand;
 import eu.brain.iot.edge.api.CommandOutcome;
@@ -35,7 +30,7 @@ import eu.brain.iot.edge.model.api.DeviceModel;
 import eu.brain.iot.eventing.api.EventBus;
 
 /**
- * What the robot model's extern functions do to the fleet, and the only place that sends robots commands: each
+ * What the robot model's steps do to the fleet, and the only place that sends robots commands: each
  * command is an edge command event on the bus with a commandId ({@link CommandLedger}), one robot's commands in
  * the order given ({@link RobotCommands}: the next once the edge answered the one before), and each outcome is
  * checked ({@link Refusals}): a refusal is logged with the robot and the reason, counted, sent again up to
@@ -43,11 +38,9 @@ import eu.brain.iot.eventing.api.EventBus;
  * the errands go is the {@link Errands} table's; where the robots and carts are, the edge's device model's.
  * <p>
  * Threads: the fleet's state (errands, pending go-tos, robots aside, refusals, the traffic planner) has one owner,
- * the fleet's thread ({@link #thread()}), on which the binding looks at the robots and handles the edge's events.
- * The extern functions run on the bus's thread, inside a transition of the model and under its lock: what they do to
- * the fleet they hand to the fleet's thread ({@link #fromModel}), and until that has run the binding leaves the robot
- * alone ({@link #effectsQueued}), so that it never reads a place of the model without the errand that goes with it.
- * Read from any thread: the device model ({@link #position}, {@link #area}) and the counters.
+ * the fleet's thread ({@link #thread()}), on which the binding looks at the robots, handles the edge's events and
+ * applies the steps the model instances' hosts report ({@link ModelStep}: {@link #resume}, {@link #sideStep},
+ * {@link #lift}, {@link #place}). Read from any thread: the device model ({@link #area}) and the counters.
  */
 @Component(service = RobotFleet.class, configurationPid = RobotConfig.PID)
 public final class RobotFleet {
@@ -62,8 +55,6 @@ public final class RobotFleet {
     private final Errands errands;
     /** Owns the fleet's state: the binding's looks and events, and the extern functions' effects. */
     private final BindingThread thread;
-    /** Per robot, the extern functions' effects handed to the fleet's thread and not run yet (any thread). */
-    private final Map<String, Integer> queued = new ConcurrentHashMap<>();
 
     // the fleet's thread only
     /**
@@ -129,35 +120,6 @@ public final class RobotFleet {
         return thread;
     }
 
-    /**
-     * An extern function's effect on the robot (called on the bus's thread, in a transition of the model, under its
-     * lock): run on the fleet's thread, after what is queued there.
-     */
-    void fromModel(String robot, Consumer<RobotFleet> effect) {
-        queued.merge(robot, 1, Integer::sum);
-        try {
-            thread.execute(() -> {
-                try {
-                    effect.accept(this);
-                } catch (RuntimeException e) {
-                    LOG.log(System.Logger.Level.WARNING, robot + ": an extern function's effect failed", e);
-                } finally {
-                    queued.computeIfPresent(robot, (r, n) -> n > 1 ? n - 1 : null);
-                }
-            });
-        } catch (RejectedExecutionException e) {
-            queued.remove(robot); // the fleet is going away: no effect on anything any more
-        }
-    }
-
-    /**
-     * @return whether an extern function's effect on the robot is still queued on the fleet's thread (read under
-     *         the model's lock: a transition and the hand-over of its effects happen together under it)
-     */
-    boolean effectsQueued(String robot) {
-        return queued.containsKey(robot);
-    }
-
     FleetView view() {
         return view;
     }
@@ -217,23 +179,9 @@ public final class RobotFleet {
                 .map(c -> c.cell()).findFirst().orElse(null);
     }
 
-    /**
-     * The robot model's {@code getPosition}: its area code when it stands in docking, unload or storage; out on
-     * the floor elsewhere (the corridor, a doorway) it counts as unload, so a robot the model first meets away
-     * from its dock starts {@code returning} (Robot.bip's initial transition).
-     */
-    double position(String robot) {
-        return view.robot(robot).map(s -> inModelArea(s.area()) ? s.area() : Grid.UNLOAD).orElse(Grid.DOCKING);
-    }
-
     /** @return the area code of the robot's cell (docking 1, unload 2, storage 3), docking when unknown */
     double area(String robot) {
-        return view.robot(robot).map(s -> s.area()).filter(RobotFleet::inModelArea).orElse(Grid.DOCKING);
-    }
-
-    /** @return whether the area code is one the robot model knows: docking, unload or storage */
-    private static boolean inModelArea(int area) {
-        return area == Grid.DOCKING || area == Grid.UNLOAD || area == Grid.STORAGE;
+        return view.robot(robot).map(s -> s.area()).filter(RobotExterns::inModelArea).orElse(Grid.DOCKING);
     }
 
     /**
@@ -363,11 +311,6 @@ public final class RobotFleet {
         if (e.dock() != null && s.isPresent() && grid.isPresent()) {
             goTo(robot, s.get(), homeward(robot, s.get(), e.dock(), grid.get()), "going home");
         }
-    }
-
-    /** @return whether the device model shows the robot carrying a cart (any thread: the model is read only) */
-    boolean carries(String robot) {
-        return view.robot(robot).map(RobotState::carrying).orElse(false);
     }
 
     /** @return whether a place sent to the robot has not shown in the device model yet */

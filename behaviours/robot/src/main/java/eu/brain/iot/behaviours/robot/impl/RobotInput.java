@@ -3,7 +3,7 @@ package eu.brain.iot.behaviours.robot.impl;
 import eu.brain.iot.edge.api.CommandOutcome;
 
 /**
- * What {@link RobotBinding} hands from the bus to its own thread: one kind per edge event it consumes, carrying just
+ * What {@link RobotBinding} hands from the bus to its own thread: one kind per event it consumes, carrying just
  * what the binding thread needs. Threads: made on the bus's delivery thread by {@link RobotBinding#notify} (from the
  * event, by the table {@code RobotBinding.INPUTS}), immutable, handled on the binding thread with a {@link Handler}.
  */
@@ -25,6 +25,8 @@ sealed interface RobotInput {
         void unreachable(Unreachable unreachable);
 
         void recovered(Recovered recovered);
+
+        void reported(Reported reported);
     }
 
     /**
@@ -82,6 +84,14 @@ sealed interface RobotInput {
         @Override
         public void handle(Handler handler) {
             handler.recovered(this);
+        }
+    }
+
+    /** A robot's model instance as its host reports it ({@code RobotModelReport}), taken as it is. */
+    record Reported(RobotModelReport report) implements RobotInput {
+        @Override
+        public void handle(Handler handler) {
+            handler.reported(this);
         }
     }
 }

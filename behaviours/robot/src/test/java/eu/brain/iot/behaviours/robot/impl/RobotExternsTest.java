@@ -2,105 +2,80 @@ package eu.brain.iot.behaviours.robot.impl;
 
 import static org.assertj.core.api.Assertions.assertThat;
 
-import java.lang.reflect.Proxy;
-import java.util.List;
-import java.util.Set;
-import java.util.concurrent.CopyOnWriteArrayList;
-import java.util.logging.Handler;
-import java.util.logging.Level;
-import java.util.logging.LogRecord;
-import java.util.logging.Logger;
-
-import org.junit.jupiter.api.AfterEach;
-import org.junit.jupiter.api.BeforeEach;
 import org.junit.jupiter.api.Test;
 
+import eu.brain.iot.behaviours.warehouse.Cell;
+
 /**
- * A move the externs cannot make for want of a fleet: a warning once per robot on a node, none for the model alone.
- * A lift counts against the robot's budget unless the robot carries its cart already.
+ * The extern functions leave what they ask of the fleet as steps, per robot and in order, for the node's host; a lift
+ * counts against the robot's budget unless the robot carries its cart already; the model alone keeps no steps.
  */
 class RobotExternsTest {
 
-    private final List<LogRecord> warnings = new CopyOnWriteArrayList<>();
-    private final Logger jul = Logger.getLogger(RobotExterns.class.getName());
-    private final Handler handler = new Handler() {
-        @Override
-        public void publish(LogRecord r) {
-            if (r.getLevel().intValue() >= Level.WARNING.intValue()) {
-                warnings.add(r);
-            }
-        }
-
-        @Override
-        public void flush() {
-        }
-
-        @Override
-        public void close() {
-        }
-    };
-
-    @BeforeEach
-    void listen() {
-        jul.addHandler(handler);
-    }
-
-    @AfterEach
-    void stopListening() {
-        jul.removeHandler(handler);
-    }
-
-    /** Robot k of group g1 sent on twice (to the unload area, then to storage). */
-    private static void moveTwice(RobotExterns externs, int k) {
-        externs.bipInstance("g1", "Robot" + k);
-        externs.moveTo(k, 2);
-        externs.moveTo(k, 3);
-    }
-
     @Test
-    void onANodeWithoutAFleetEachRobotIsWarnedAboutOnceUntilTheFleetIsBack() {
+    void eachRobotsStepsAreKeptInOrderUntilItsHostTakesThem() {
         RobotExterns externs = new RobotExterns();
-        for (int i = 0; i < 100; i++) {
-            moveTwice(externs, 1);
-            moveTwice(externs, 2);
-        }
-        assertThat(warnings).hasSize(2).allSatisfy(r -> assertThat(r.getMessage()).contains("no fleet service"));
+        externs.bipInstance("g2", "Robot1"); // robot4
+        externs.moveTo(1, 2);
+        externs.liftCart(1, 3);
+        externs.moveTo(1, 0); // not concerned by a resolved collision: nothing
+        externs.moveTo(1, -(1 + 4 + 1000 * 2));
+        externs.bipInstance("g1", "Robot1");
+        externs.placeCart(1);
+
+        assertThat(externs.takeSteps("robot4")).containsExactly(ModelStep.MOVE_ON, ModelStep.LIFT,
+                ModelStep.aside(new Cell(4, 2)));
+        assertThat(externs.takeSteps("robot4")).as("taken once").isEmpty();
+        assertThat(externs.takeSteps("robot1")).containsExactly(ModelStep.PLACE);
     }
 
     @Test
-    void theModelAloneHasNoFleetByDesignAndWarnsAboutNone() {
+    void aRobotWhoseHostStoppedTakingItsStepsKeepsOnlyTheLatest() {
+        RobotExterns externs = new RobotExterns();
+        externs.bipInstance("g1", "Robot1");
+        for (int i = 0; i < RobotExterns.MAX_STEPS + 10; i++) {
+            externs.moveTo(1, 2);
+        }
+        externs.placeCart(1);
+        assertThat(externs.takeSteps("robot1")).hasSize(RobotExterns.MAX_STEPS).last().isEqualTo(ModelStep.PLACE);
+    }
+
+    @Test
+    void theModelAloneKeepsNoSteps() {
         RobotExterns externs = RobotExterns.withoutFleet();
-        for (int i = 0; i < 100; i++) {
-            moveTwice(externs, 1);
-        }
-        assertThat(warnings).isEmpty();
+        externs.bipInstance("g1", "Robot1");
+        externs.moveTo(1, 2);
+        externs.placeCart(1);
+        assertThat(externs.takeSteps("robot1")).isEmpty();
     }
 
     @Test
-    void aLiftCountsAgainstTheBudgetUnlessTheRobotCarriesItsCartAlready() throws Exception {
+    void aLiftCountsAgainstTheBudgetUnlessTheRobotCarriesItsCartAlready() {
         TrafficControlTest.Model model = new TrafficControlTest.Model();
         model.robot(1, 1, "stopped", 0, null, null);
-        FleetLeadership leadership = new FleetLeadership(new FleetLeadershipTest.Recorded(),
-                new FleetLeadershipTest.Ownership("node1", Set.of("robot1"), Set.of("robot1")), null);
-        RobotFleet fleet = new RobotFleet(model, new FleetLeadershipTest.Recorded(), leadership, defaults(), null);
-        try {
-            RobotExterns externs = new RobotExterns();
-            externs.fleet = fleet;
-            externs.bipInstance("g1", "Robot1");
-            assertThat(externs.liftCart(1, 3)).as("a cart lifted from the floor").isEqualTo(2);
+        RobotExterns externs = new RobotExterns();
+        externs.bindDevices(model);
+        externs.bipInstance("g1", "Robot1");
+        assertThat(externs.liftCart(1, 3)).as("a cart lifted from the floor").isEqualTo(2);
 
-            model.carrying("cart1"); // taken over carrying it, or carrying it back to storage: lifted again
-            model.robot(1, 1, "stopped", 0, null, null);
-            assertThat(externs.liftCart(1, 2)).as("the cart it carries, counted when first lifted").isEqualTo(2);
-        } finally {
-            fleet.deactivate();
-            leadership.deactivate();
-        }
+        model.carrying("cart1"); // taken over carrying it, or carrying it back to storage: lifted again
+        model.robot(1, 1, "stopped", 0, null, null);
+        assertThat(externs.liftCart(1, 2)).as("the cart it carries, counted when first lifted").isEqualTo(2);
+        assertThat(externs.takeSteps("robot1")).containsExactly(ModelStep.LIFT, ModelStep.LIFT);
     }
 
-    /** The robot behaviour's configuration with every default. */
-    private static RobotConfig defaults() {
-        return (RobotConfig) Proxy.newProxyInstance(RobotConfig.class.getClassLoader(),
-                new Class<?>[] { RobotConfig.class }, (proxy, method, args) -> method.getDefaultValue());
+    @Test
+    void aRobotIsWhereItsAreaSaysOrInUnloadOutOnTheFloorOrDockedWhenNotSeen() {
+        RobotExterns externs = new RobotExterns();
+        externs.bipInstance("g1", "Robot1");
+        assertThat(externs.getPosition(1)).as("no device model").isEqualTo(RobotExterns.IN_DOCKING);
+        TrafficControlTest.Model model = new TrafficControlTest.Model();
+        model.robot(1, 1, "stopped", 0, null, null); // area 0 in the test's model: the corridor
+        externs.bindDevices(model);
+        assertThat(externs.getPosition(1)).isEqualTo(2.0);
+        externs.unbindDevices(new TrafficControlTest.Model());
+        assertThat(externs.getPosition(1)).as("another model went: this one stays").isEqualTo(2.0);
+        externs.unbindDevices(model);
+        assertThat(externs.getPosition(1)).isEqualTo(RobotExterns.IN_DOCKING);
     }
 }

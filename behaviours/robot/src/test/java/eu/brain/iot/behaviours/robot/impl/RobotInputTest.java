@@ -44,7 +44,7 @@ class RobotInputTest {
         Map<Class<?>, String> handledBy = Map.of(RobotPositionChanged.class, "moved", ObstacleDetected.class,
                 "obstacle", ObstacleCleared.class, "obstacle", MissionFinished.class, "missionEnded",
                 MissionFailed.class, "missionEnded", CommandOutcome.class, "outcome", DeviceUnreachable.class,
-                "unreachable", DeviceRecovered.class, "recovered");
+                "unreachable", DeviceRecovered.class, "recovered", RobotModelReport.class, "reported");
         for (String name : consumed(RobotBinding.class)) {
             BrainIoTEvent event = (BrainIoTEvent) Class.forName(name).getConstructor().newInstance();
             assertThat(handledBy(RobotBinding.INPUTS.inputOf(event))).as(name)
