@@ -70,8 +70,9 @@ final class Refusals {
     private EdgeCommand refused(CommandLedger.Sent sent, CommandOutcome o) {
         String robot = sent.command().deviceId;
         int n = inARow.merge(robot, 1, Integer::sum);
+        String command = o.command != null ? o.command : sent.command().getClass().getSimpleName(); // none: lost
         LOG.log(System.Logger.Level.WARNING, "{0} refused {1} ({2}): {3} (status {4}); refusal {5} in a row", robot,
-                o.command, sent.why(), o.reason, o.status, n);
+                command, sent.why(), o.reason, o.status, n);
         if (sent.command() instanceof CancelMissionCommand) {
             return null; // nothing to cancel: the robot's go-to had ended
         }

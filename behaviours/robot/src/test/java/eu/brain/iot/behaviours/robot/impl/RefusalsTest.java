@@ -4,8 +4,12 @@ import static eu.brain.iot.behaviours.robot.impl.RobotCommandsTest.outcome;
 import static eu.brain.iot.behaviours.robot.impl.RobotCommandsTest.to;
 import static org.assertj.core.api.Assertions.assertThat;
 
+import java.text.MessageFormat;
 import java.util.List;
 import java.util.concurrent.CopyOnWriteArrayList;
+import java.util.logging.Handler;
+import java.util.logging.LogRecord;
+import java.util.logging.Logger;
 
 import org.junit.jupiter.api.Test;
 
@@ -78,6 +82,34 @@ class RefusalsTest {
         impatient.expireUnanswered();
         assertThat(plannedAnew).containsExactly("robot3");
         assertThat(ledger.unanswered(0)).isEmpty();
+    }
+
+    @Test
+    void aCommandLeftWithoutOutcomeIsLoggedByItsKind() {
+        List<String> warnings = new CopyOnWriteArrayList<>();
+        Handler handler = new Handler() {
+            @Override
+            public void publish(LogRecord r) {
+                warnings.add(MessageFormat.format(r.getMessage(), r.getParameters()));
+            }
+
+            @Override
+            public void flush() {
+            }
+
+            @Override
+            public void close() {
+            }
+        };
+        Logger jul = Logger.getLogger(Refusals.class.getName());
+        jul.addHandler(handler);
+        try {
+            commands.send(to(new GoToCommand(), "robot3"), "a leg");
+            new Refusals(commands, ledger, 2, 0, plannedAnew::add).expireUnanswered();
+        } finally {
+            jul.removeHandler(handler);
+        }
+        assertThat(warnings).anySatisfy(w -> assertThat(w).startsWith("robot3 refused GoToCommand (a leg): no outcome"));
     }
 
     @Test
