@@ -122,7 +122,7 @@ final class OptionsParser {
         "key in the run's folder)"})
     private String fabricKey;
     @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
-            description = "the run's folder (scenario/target/runs/<date-time>)")
+            description = "the run's folder, new or empty (scenario/target/runs/<date-time>)")
     private String runDir;
     @Option(names = "--report", paramLabel = "FILE", order = 17, description = "the JSON report (<run-dir>/report.json)")
     private String report;
@@ -240,6 +240,11 @@ final class OptionsParser {
         Path runFolder = runDir != null ? Path.of(runDir).toAbsolutePath()
                 : rootDir.resolve("scenario/target/runs")
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
+        if (runDir != null && holdsFiles(runFolder)) {
+            throw new UsageException("--run-dir " + runDir + ": the folder holds an earlier run (its journal would"
+                    + " bring that run's behaviours back, and the nodes would not start bare): remove it, or choose a"
+                    + " new or empty folder");
+        }
         Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
         long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
         if (traffic && noTraffic) {
@@ -248,6 +253,18 @@ final class OptionsParser {
         return new Options(rootDir, mapFile, gen, seedValue, speedValue, waitLimitMs, deadlineMs, List.copyOf(faults),
                 runFolder, reportFile, progressMs, !noBehaviours, List.copyOf(nodeConfigs), !noTraffic, fabric,
                 nodeCount);
+    }
+
+    /** @return whether the folder exists and holds anything */
+    private static boolean holdsFiles(Path folder) throws UsageException {
+        if (!Files.isDirectory(folder)) {
+            return Files.exists(folder);
+        }
+        try (var entries = Files.list(folder)) {
+            return entries.findAny().isPresent();
+        } catch (IOException e) {
+            throw new UsageException("--run-dir " + folder + ": cannot be read (" + e.getMessage() + ")");
+        }
     }
 
     /**

@@ -146,6 +146,15 @@ class OptionsParserTest {
     }
 
     @Test
+    void aRunFolderThatHoldsAnEarlierRunIsRefused(@TempDir Path dir) throws Exception {
+        assertThat(OptionsParser.parse("--run-dir", dir.toString()).runDir()).as("empty: taken").isEqualTo(dir);
+        java.nio.file.Files.createDirectories(dir.resolve("journal"));
+        assertThatThrownBy(() -> OptionsParser.parse("--run-dir", dir.toString())).hasMessage("--run-dir " + dir
+                + ": the folder holds an earlier run (its journal would bring that run's behaviours back, and the"
+                + " nodes would not start bare): remove it, or choose a new or empty folder");
+    }
+
+    @Test
     void anUnknownRobotInAFaultIsABadOptionToo(@org.junit.jupiter.api.io.TempDir Path dir) {
         ByteArrayOutputStream err = new ByteArrayOutputStream();
         int code = Main.run(new String[] {"--fault-offline", "robot9@1s+1s", "--run-dir", dir.toString()},
