@@ -59,6 +59,8 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         return t;
     });
     private volatile boolean leads;
+    /** Whether an instance of the fabric (this one or another) is known to drive the fleet. */
+    private volatile boolean leaderKnown;
     /** The errand table shared while this instance leads, and the leader's, heard while it stands by. */
     private final ErrandHandover handover = new ErrandHandover();
     /** The leader last logged; under the lock. */
@@ -111,6 +113,11 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
     /** @return this instance's id, new at each start, which its beats carry */
     String instanceId() {
         return rule.self().id();
+    }
+
+    /** @return whether an instance of the fabric, this one or another, is known to drive the fleet */
+    boolean leaderKnown() {
+        return leaderKnown;
     }
 
     /** @return whether this instance drives the fleet now */
@@ -174,6 +181,7 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
             handover.standBy();
         }
         leads = now;
+        leaderKnown = leader != null;
         drive(now);
     }
 

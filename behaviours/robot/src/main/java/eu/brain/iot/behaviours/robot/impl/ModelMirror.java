@@ -6,6 +6,7 @@ import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
+import java.util.concurrent.TimeUnit;
 
 /**
  * The robots' model instances as the binding knows them: each as its host last reported it ({@link RobotModelHost},
@@ -25,8 +26,17 @@ final class ModelMirror {
     private record Sent(long seq, long atNanos) {
     }
 
+    /**
+     * Wall time from this mirror's start during which a robot whose instance no host has reported is left alone: its
+     * host reports it within a second once it knows an instance drives the fleet ({@link RobotModelHost}). After it,
+     * such a robot's instance is taken as in START: its node may have no host yet, which the first input has
+     * installed.
+     */
+    static final long FIRST_REPORTS_NANOS = TimeUnit.MILLISECONDS.toNanos(1_500);
+
     private final String coordinator;
     private final long lostAfterNanos;
+    private final long startedNanos;
     private long seq;
     private final Map<String, Instance> instances = new HashMap<>();
     private final Map<String, Sent> sent = new HashMap<>();
@@ -35,9 +45,15 @@ final class ModelMirror {
      * @param coordinator this binding's instance id, which its inputs carry and the reports echo
      * @param lostAfterNanos wall time after which an input without a report is given up
      */
-    ModelMirror(String coordinator, long lostAfterNanos) {
+    ModelMirror(String coordinator, long lostAfterNanos, long startedNanos) {
         this.coordinator = coordinator;
         this.lostAfterNanos = lostAfterNanos;
+        this.startedNanos = startedNanos;
+    }
+
+    /** @return whether the robot's instance is not reported yet and may still be, being early days for this mirror */
+    boolean reportDue(String robot, long nowNanos) {
+        return !instances.containsKey(robot) && nowNanos - startedNanos < FIRST_REPORTS_NANOS;
     }
 
     /** @return the input firing the port of the robot's instance on its owner, recorded as awaiting its report */

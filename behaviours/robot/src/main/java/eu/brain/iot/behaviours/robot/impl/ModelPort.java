@@ -1,5 +1,7 @@
 package eu.brain.iot.behaviours.robot.impl;
 
+import java.util.function.Supplier;
+
 import eu.brain.iot.behaviours.events.RobotBehaviorFromUnloadObstacle;
 import eu.brain.iot.behaviours.events.RobotBehaviorStorageToDocking;
 import eu.brain.iot.behaviours.events.RobotBehaviorUnloadLocation;
@@ -11,57 +13,36 @@ import eu.brain.iot.eventing.api.BrainIoTEvent;
 /**
  * The robot model's ports the environment drives (Robot.bip's exported status ports), and the generated event of
  * each for a robot's instance: robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group
- * {@code g<ceil(K/3)>} ({@link RobotNames}).
+ * {@code g<ceil(K/3)>} ({@link RobotNames}). The generated events share no supertype with their data, so it is set by
+ * the fields' names, the same in each ({@code group}, {@code component}, {@code position}, {@code detect}: the port
+ * type {@code Port_Robot_Status}).
  */
 enum ModelPort {
-    UNLOAD_LOCATION, UNLOAD_TO_UNLOAD, FROM_UNLOAD_OBSTACLE, UNLOAD_TO_STORAGE, STORAGE_TO_DOCKING;
+    UNLOAD_LOCATION(RobotBehaviorUnloadLocation::new),
+    UNLOAD_TO_UNLOAD(RobotBehaviorUnloadToUnload::new),
+    FROM_UNLOAD_OBSTACLE(RobotBehaviorFromUnloadObstacle::new),
+    UNLOAD_TO_STORAGE(RobotBehaviorUnloadToStorage::new),
+    STORAGE_TO_DOCKING(RobotBehaviorStorageToDocking::new);
+
+    private final Supplier<BrainIoTEvent> event;
+
+    ModelPort(Supplier<BrainIoTEvent> event) {
+        this.event = event;
+    }
 
     /** @return the port's event for the robot's instance, with its data */
     BrainIoTEvent event(String robot, double position, int detect) {
         int k = RobotNames.number(robot);
-        String group = RobotNames.group(k);
-        String component = RobotNames.component(k);
-        return switch (this) {
-            case UNLOAD_LOCATION -> {
-                RobotBehaviorUnloadLocation e = new RobotBehaviorUnloadLocation();
-                e.group = group;
-                e.component = component;
-                e.position = position;
-                e.detect = detect;
-                yield e;
-            }
-            case UNLOAD_TO_UNLOAD -> {
-                RobotBehaviorUnloadToUnload e = new RobotBehaviorUnloadToUnload();
-                e.group = group;
-                e.component = component;
-                e.position = position;
-                e.detect = detect;
-                yield e;
-            }
-            case FROM_UNLOAD_OBSTACLE -> {
-                RobotBehaviorFromUnloadObstacle e = new RobotBehaviorFromUnloadObstacle();
-                e.group = group;
-                e.component = component;
-                e.position = position;
-                e.detect = detect;
-                yield e;
-            }
-            case UNLOAD_TO_STORAGE -> {
-                RobotBehaviorUnloadToStorage e = new RobotBehaviorUnloadToStorage();
-                e.group = group;
-                e.component = component;
-                e.position = position;
-                e.detect = detect;
-                yield e;
-            }
-            case STORAGE_TO_DOCKING -> {
-                RobotBehaviorStorageToDocking e = new RobotBehaviorStorageToDocking();
-                e.group = group;
-                e.component = component;
-                e.position = position;
-                e.detect = detect;
-                yield e;
-            }
-        };
+        BrainIoTEvent e = event.get();
+        try {
+            e.getClass().getField("group").set(e, RobotNames.group(k));
+            e.getClass().getField("component").set(e, RobotNames.component(k));
+            e.getClass().getField("position").setDouble(e, position);
+            e.getClass().getField("detect").setInt(e, detect);
+        } catch (ReflectiveOperationException notThePortType) { // the generator changed Port_Robot_Status
+            throw new IllegalStateException(e.getClass().getName() + " lacks a field of Port_Robot_Status",
+                    notThePortType);
+        }
+        return e;
     }
 }

@@ -157,7 +157,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         this.bus = bus;
         this.thread = fleet.thread();
         this.pollNanos = thread.periodNanos();
-        this.instances = new ModelMirror(leadership.instanceId(), pollNanos * LOST_AFTER_LOOKS);
+        this.instances = new ModelMirror(leadership.instanceId(), pollNanos * LOST_AFTER_LOOKS, System.nanoTime());
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
         this.looks = thread.start(this::safeTick);
         LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
@@ -297,8 +297,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         RobotState s = state.get();
         fleet.adopt(s);
         long now = System.nanoTime();
-        if (instances.awaiting(robot, now)) {
-            return; // a port event's transitions and the steps they ask for are still to come
+        if (instances.awaiting(robot, now) || instances.reportDue(robot, now)) {
+            return; // a port event's transitions and the steps they ask for, or a first report, are still to come
         }
         // an instance not reported yet (its node has no host yet: the first input has one installed) is in START
         Optional<ModelMirror.Instance> hosted = instances.of(robot).filter(h -> !h.places().isEmpty());

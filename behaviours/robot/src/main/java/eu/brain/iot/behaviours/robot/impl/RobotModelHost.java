@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Map;
+import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.Future;
 import java.util.concurrent.RejectedExecutionException;
@@ -36,7 +37,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * fleet ({@link RobotExterns}' steps). It also reports, every look ({@code poll.period.ms} of warehouse time), each
  * owned robot whose instance changed through the orchestrator or the door (their connector events reach the model on
  * every node; only an instance waiting for one takes part), and every robot it owns once a second of wall time, so
- * that an instance that takes the fleet over learns them. A host ignores the inputs of robots its node does not own
+ * that an instance that takes the fleet over learns them; these only once an instance is known to drive the fleet
+ * ({@link FleetLeadership#leaderKnown}: a node just started has not heard it yet, and a report nobody takes would have
+ * the BMS look for a behaviour that does). A host ignores the inputs of robots its node does not own
  * (one handed over since the input was sent): the binding sends them again when no report comes.
  * <p>
  * Threads: {@link #notify} (the bus's thread) hands every input to the host's own thread, which fires, reports and
@@ -58,6 +61,8 @@ public final class RobotModelHost implements SmartBehaviour<RobotModelInput> {
 
     private final EventBus bus;
     private final DeviceOwnership ownership;
+    /** Whether an instance drives the fleet: until one is known, reports made without an input have no taker. */
+    private final FleetLeadership leadership;
     private final RobotSmartBehaviour model;
     private final RobotExterns externs;
     private final BindingThread thread;
@@ -80,10 +85,12 @@ public final class RobotModelHost implements SmartBehaviour<RobotModelInput> {
 
     @Activate
     public RobotModelHost(@Reference EventBus bus, @Reference DeviceOwnership ownership,
+            @Reference FleetLeadership leadership,
             @Reference(target = "(component.name=eu.brain.iot.behaviours.robot.RobotSmartBehaviour)")
             SmartBehaviour<?> model, @Reference RobotExterns externs, RobotConfig config, BundleContext context) {
         this.bus = bus;
         this.ownership = ownership;
+        this.leadership = leadership;
         this.model = (RobotSmartBehaviour) model;
         this.externs = externs;
         this.thread = new BindingThread("robot-model-host", config.speed(), config.poll_period_ms());
@@ -165,7 +172,7 @@ public final class RobotModelHost implements SmartBehaviour<RobotModelInput> {
             if (full) {
                 lastFull = now;
             }
-            for (String robot : ownership.owned()) {
+            for (String robot : leadership.leaderKnown() ? ownership.owned() : Set.<String>of()) {
                 if (RobotNames.number(robot) >= 1) {
                     report(robot, full);
                 }

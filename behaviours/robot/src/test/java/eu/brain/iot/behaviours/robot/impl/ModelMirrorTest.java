@@ -18,7 +18,7 @@ class ModelMirrorTest {
 
     private static final long LOST = 1_000;
 
-    private final ModelMirror mirror = new ModelMirror("me", LOST);
+    private final ModelMirror mirror = new ModelMirror("me", LOST, -ModelMirror.FIRST_REPORTS_NANOS);
 
     private static RobotModelReport report(String node, String coordinator, long seq, List<String> places,
             String data, String... steps) {
@@ -58,6 +58,17 @@ class ModelMirrorTest {
             assertThat(i.places()).containsExactly("UNLOAD");
             assertThat(i.data()).isEqualTo(Map.of("cart", 3L, "carrying", false, "position", 2.0));
         });
+    }
+
+    @Test
+    void aRobotNotReportedIsLeftAloneForItsHostsFirstReportOnly() {
+        ModelMirror young = new ModelMirror("me", LOST, 0);
+        assertThat(young.reportDue("robot4", 0)).isTrue();
+        young.reported(report("node2", null, -1, List.of(), ""));
+        assertThat(young.reportDue("robot4", 1)).as("reported").isFalse();
+        assertThat(young.reportDue("robot5", ModelMirror.FIRST_REPORTS_NANOS - 1)).isTrue();
+        assertThat(young.reportDue("robot5", ModelMirror.FIRST_REPORTS_NANOS)).as("its node may have no host yet")
+                .isFalse();
     }
 
     @Test

@@ -22,20 +22,25 @@ import eu.brain.iot.behaviours.robot.RobotSmartBehaviour;
  */
 class RobotModelHostTest {
 
-    private static final Duration DEADLINE = Duration.ofSeconds(10);
+    private static final Duration DEADLINE = Duration.ofSeconds(20);
 
     private final FleetLeadershipTest.Recorded bus = new FleetLeadershipTest.Recorded();
     private final RobotExterns externs = new RobotExterns();
     private final RobotSmartBehaviour model = new RobotSmartBehaviour(bus, externs, Map.of());
     /** node2 of a fleet of six robots owns robot1 and robot4. */
-    private final RobotModelHost host = new RobotModelHost(bus,
-            new FleetLeadershipTest.Ownership("node2", Set.of("robot1", "robot4", "door1"),
-                    Set.of("robot1", "robot2", "robot3", "robot4", "robot5", "robot6", "door1")),
-            model, externs, defaults(), null);
+    private final FleetLeadershipTest.Ownership ownership = new FleetLeadershipTest.Ownership("node2",
+            Set.of("robot1", "robot4", "door1"), Set.of("robot1", "robot2", "robot3", "robot4", "robot5", "robot6",
+                    "door1"));
+    /** node2's instance, which hears of no other: it drives the fleet once it has listened for a while. */
+    private final FleetLeadership leadership = new FleetLeadership(new FleetLeadershipTest.Recorded(), ownership,
+            null);
+    private final RobotModelHost host = new RobotModelHost(bus, ownership, leadership, model, externs, defaults(),
+            null);
 
     @AfterEach
-    void stop() {
+    void stop() throws InterruptedException {
         host.deactivate();
+        leadership.deactivate();
     }
 
     private static RobotConfig defaults() {
@@ -92,8 +97,11 @@ class RobotModelHostTest {
     }
 
     @Test
-    void everyOwnedRobotIsReportedWithoutAnInputAndOnlyRobots() {
+    void everyOwnedRobotIsReportedWithoutAnInputOnceAnInstanceDrivesTheFleetAndOnlyRobots() {
+        assertThat(leadership.leaderKnown()).as("it listens first").isFalse();
+        assertThat(bus.events).as("no report before an instance drives the fleet").isEmpty();
         await().atMost(DEADLINE).until(() -> !reports("robot1").isEmpty() && !reports("robot4").isEmpty());
+        assertThat(leadership.leaderKnown()).isTrue();
         assertThat(reports("robot1").get(0).places).as("no instance yet: its group is not created").isEmpty();
         assertThat(reports("robot1").get(0).seq).isEqualTo(-1);
         assertThat(bus.events.stream().filter(RobotModelReport.class::isInstance)
