@@ -59,8 +59,8 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         return t;
     });
     private volatile boolean leads;
-    /** Whether an instance of the fabric (this one or another) is known to drive the fleet. */
-    private volatile boolean leaderKnown;
+    /** The id of the instance of the fabric (this one or another) known to drive the fleet, or null for none. */
+    private volatile String leaderId;
     /** The errand table shared while this instance leads, and the leader's, heard while it stands by. */
     private final ErrandHandover handover = new ErrandHandover();
     /** The leader last logged; under the lock. */
@@ -115,9 +115,9 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
         return rule.self().id();
     }
 
-    /** @return whether an instance of the fabric, this one or another, is known to drive the fleet */
-    boolean leaderKnown() {
-        return leaderKnown;
+    /** @return the id of the instance of the fabric, this one or another, known to drive the fleet, or null */
+    String leaderId() {
+        return leaderId;
     }
 
     /** @return whether this instance drives the fleet now */
@@ -181,7 +181,7 @@ public final class FleetLeadership implements SmartBehaviour<RobotBehaviourAlive
             handover.standBy();
         }
         leads = now;
-        leaderKnown = leader != null;
+        leaderId = leader == null ? null : leader.id();
         drive(now);
     }
 

@@ -6,6 +6,7 @@ import java.util.HashMap;
 import java.util.Hashtable;
 import java.util.List;
 import java.util.Map;
+import java.util.Objects;
 import java.util.Set;
 import java.util.TreeMap;
 import java.util.concurrent.Future;
@@ -37,9 +38,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * fleet ({@link RobotExterns}' steps). It also reports, every look ({@code poll.period.ms} of warehouse time), each
  * owned robot whose instance changed through the orchestrator or the door (their connector events reach the model on
  * every node; only an instance waiting for one takes part), and every robot it owns once a second of wall time, so
- * that an instance that takes the fleet over learns them; these only once an instance is known to drive the fleet
- * ({@link FleetLeadership#leaderKnown}: a node just started has not heard it yet, and a report nobody takes would have
- * the BMS look for a behaviour that does). A host ignores the inputs of robots its node does not own
+ * that an instance that takes the fleet over learns them, and at once when another instance drives it; these only
+ * once an instance is known to drive the fleet ({@link FleetLeadership#leaderId}: a node just started has not heard it
+ * yet, and a report nobody takes would have the BMS look for a behaviour that does). A host ignores the inputs of robots its node does not own
  * (one handed over since the input was sent): the binding sends them again when no report comes.
  * <p>
  * Threads: {@link #notify} (the bus's thread) hands every input to the host's own thread, which fires, reports and
@@ -76,6 +77,8 @@ public final class RobotModelHost implements SmartBehaviour<RobotModelInput> {
     /** Per robot, the last input fired. */
     private final Map<String, Fired> fired = new HashMap<>();
     private long lastFull;
+    /** The instance that drives the fleet at the last look: one that takes over has every robot reported at once. */
+    private String lastLeader;
 
     private record Fired(String coordinator, long seq) {
     }
@@ -168,11 +171,13 @@ public final class RobotModelHost implements SmartBehaviour<RobotModelInput> {
     private void safeLook() {
         try {
             long now = System.nanoTime();
-            boolean full = now - lastFull >= FULL_REPORT_NANOS;
+            String leader = leadership.leaderId();
+            boolean full = now - lastFull >= FULL_REPORT_NANOS || !Objects.equals(leader, lastLeader);
+            lastLeader = leader;
             if (full) {
                 lastFull = now;
             }
-            for (String robot : leadership.leaderKnown() ? ownership.owned() : Set.<String>of()) {
+            for (String robot : leader != null ? ownership.owned() : Set.<String>of()) {
                 if (RobotNames.number(robot) >= 1) {
                     report(robot, full);
                 }

@@ -98,10 +98,10 @@ class RobotModelHostTest {
 
     @Test
     void everyOwnedRobotIsReportedWithoutAnInputOnceAnInstanceDrivesTheFleetAndOnlyRobots() {
-        assertThat(leadership.leaderKnown()).as("it listens first").isFalse();
+        assertThat(leadership.leaderId()).as("it listens first").isNull();
         assertThat(bus.events).as("no report before an instance drives the fleet").isEmpty();
         await().atMost(DEADLINE).until(() -> !reports("robot1").isEmpty() && !reports("robot4").isEmpty());
-        assertThat(leadership.leaderKnown()).isTrue();
+        assertThat(leadership.leaderId()).isEqualTo(leadership.instanceId());
         assertThat(reports("robot1").get(0).places).as("no instance yet: its group is not created").isEmpty();
         assertThat(reports("robot1").get(0).seq).isEqualTo(-1);
         assertThat(bus.events.stream().filter(RobotModelReport.class::isInstance)
