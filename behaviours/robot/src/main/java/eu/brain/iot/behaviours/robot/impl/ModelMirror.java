@@ -99,7 +99,8 @@ final class ModelMirror {
         Sent s = sent.get(robot);
         if (s != null && nowNanos - s.atNanos() >= lostAfterNanos) {
             LOG.log(System.Logger.Level.INFO, "{0}: no report of its model instance for {1} ms after input {2}: "
-                    + "given up (sent again if still called for)", robot, (nowNanos - s.atNanos()) / 1_000_000, s.seq());
+                    + "given up (sent again if still called for)", robot, (nowNanos - s.atNanos()) / 1_000_000,
+                    s.seq());
             sent.remove(robot);
             return false;
         }

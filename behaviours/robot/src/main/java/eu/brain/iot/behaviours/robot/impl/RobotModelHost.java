@@ -40,8 +40,9 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * every node; only an instance waiting for one takes part), and every robot it owns once a second of wall time, so
  * that an instance that takes the fleet over learns them, and at once when another instance drives it; these only
  * once an instance is known to drive the fleet ({@link FleetLeadership#leaderId}: a node just started has not heard it
- * yet, and a report nobody takes would have the BMS look for a behaviour that does). A host ignores the inputs of robots its node does not own
- * (one handed over since the input was sent): the binding sends them again when no report comes.
+ * yet, and a report nobody takes would have the BMS look for a behaviour that does). A host ignores the inputs of
+ * robots its node does not own (one handed over since the input was sent): the binding sends them again when no
+ * report comes.
  * <p>
  * Threads: {@link #notify} (the bus's thread) hands every input to the host's own thread, which fires, reports and
  * owns this object's state; the model and the extern functions' steps are read together under the model's lock.

@@ -109,7 +109,8 @@ class RefusalsTest {
         } finally {
             jul.removeHandler(handler);
         }
-        assertThat(warnings).anySatisfy(w -> assertThat(w).startsWith("robot3 refused GoToCommand (a leg): no outcome"));
+        assertThat(warnings)
+                .anySatisfy(w -> assertThat(w).startsWith("robot3 refused GoToCommand (a leg): no outcome"));
     }
 
     @Test
