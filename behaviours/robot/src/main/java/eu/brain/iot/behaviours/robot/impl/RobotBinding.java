@@ -449,8 +449,11 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
      */
     private void fire(Instance in, ModelPort port, double position, int detect) {
         long now = System.nanoTime();
-        published.put(in.robot(), new Published(in.places(), in.data(), now));
         String node = fleet.view().ownerNode(in.robot()).orElse(leadership.nodeName());
+        if (!instances.mayFire(node, leadership.nodeName(), now)) {
+            return; // its node may have no host yet: another node's is being installed first (ModelMirror)
+        }
+        published.put(in.robot(), new Published(in.places(), in.data(), now));
         bus.deliver(instances.input(in.robot(), node, port, position, detect, now));
     }
 
