@@ -122,7 +122,7 @@ final class OptionsParser {
         "key in the run's folder)"})
     private String fabricKey;
     @Option(names = "--run-dir", paramLabel = "DIR", order = 16,
-            description = "the run's folder, new or empty (scenario/target/runs/<date-time>)")
+            description = "the run's folder, where no run was (scenario/target/runs/<date-time>)")
     private String runDir;
     @Option(names = "--report", paramLabel = "FILE", order = 17, description = "the JSON report (<run-dir>/report.json)")
     private String report;
@@ -240,10 +240,10 @@ final class OptionsParser {
         Path runFolder = runDir != null ? Path.of(runDir).toAbsolutePath()
                 : rootDir.resolve("scenario/target/runs")
                         .resolve(LocalDateTime.now().format(DateTimeFormatter.ofPattern("yyyyMMdd-HHmmss")));
-        if (runDir != null && holdsFiles(runFolder)) {
+        if (runDir != null && holdsARun(runFolder)) {
             throw new UsageException("--run-dir " + runDir + ": the folder holds an earlier run (its journal would"
                     + " bring that run's behaviours back, and the nodes would not start bare): remove it, or choose a"
-                    + " new or empty folder");
+                    + " folder where no run was");
         }
         Path reportFile = report != null ? Path.of(report).toAbsolutePath() : runFolder.resolve("report.json");
         long progressMs = Math.round(decimal("progress", progress, 2, 0.1, 3600) * 1000);
@@ -255,13 +255,17 @@ final class OptionsParser {
                 nodeCount);
     }
 
-    /** @return whether the folder exists and holds anything */
-    private static boolean holdsFiles(Path folder) throws UsageException {
+    /** What a run leaves in its folder (a node's, or each node's in {@code nodeK}): any of them, a run was there. */
+    private static final Pattern RUN_OUTPUT = Pattern.compile("journal|state|federation|node-config|node\\.log"
+            + "|report\\.json|node\\d+");
+
+    /** @return whether the folder holds what an earlier run left (other files may be there: a broker's, say) */
+    private static boolean holdsARun(Path folder) throws UsageException {
         if (!Files.isDirectory(folder)) {
-            return Files.exists(folder);
+            return false;
         }
         try (var entries = Files.list(folder)) {
-            return entries.findAny().isPresent();
+            return entries.anyMatch(e -> RUN_OUTPUT.matcher(e.getFileName().toString()).matches());
         } catch (IOException e) {
             throw new UsageException("--run-dir " + folder + ": cannot be read (" + e.getMessage() + ")");
         }

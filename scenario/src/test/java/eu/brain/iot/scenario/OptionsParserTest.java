@@ -148,10 +148,13 @@ class OptionsParserTest {
     @Test
     void aRunFolderThatHoldsAnEarlierRunIsRefused(@TempDir Path dir) throws Exception {
         assertThat(OptionsParser.parse("--run-dir", dir.toString()).runDir()).as("empty: taken").isEqualTo(dir);
+        java.nio.file.Files.writeString(dir.resolve("mosquitto.conf"), "listener 18830 127.0.0.1\n");
+        assertThat(OptionsParser.parse("--run-dir", dir.toString()).runDir()).as("a file of the user's: taken")
+                .isEqualTo(dir);
         java.nio.file.Files.createDirectories(dir.resolve("journal"));
         assertThatThrownBy(() -> OptionsParser.parse("--run-dir", dir.toString())).hasMessage("--run-dir " + dir
                 + ": the folder holds an earlier run (its journal would bring that run's behaviours back, and the"
-                + " nodes would not start bare): remove it, or choose a new or empty folder");
+                + " nodes would not start bare): remove it, or choose a folder where no run was");
     }
 
     @Test
