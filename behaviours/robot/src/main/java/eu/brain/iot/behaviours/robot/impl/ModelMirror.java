@@ -2,12 +2,10 @@ package eu.brain.iot.behaviours.robot.impl;
 
 import java.util.ArrayList;
 import java.util.HashMap;
-import java.util.HashSet;
 import java.util.LinkedHashMap;
 import java.util.List;
 import java.util.Map;
 import java.util.Optional;
-import java.util.Set;
 import java.util.concurrent.TimeUnit;
 
 /**
@@ -36,20 +34,9 @@ final class ModelMirror {
      */
     static final long FIRST_REPORTS_NANOS = TimeUnit.MILLISECONDS.toNanos(1_500);
 
-    /**
-     * Wall time an input to a node without a host may take to have one installed there before another such node is
-     * sent one ({@link #mayFire}).
-     */
-    static final long INSTALL_NANOS = TimeUnit.SECONDS.toNanos(30);
-
     private final String coordinator;
     private final long lostAfterNanos;
     private final long startedNanos;
-    /** The nodes whose host has reported: each has the robot behaviour. */
-    private final Set<String> hosts = new HashSet<>();
-    /** The node without a host sent inputs now, and since when; null for none. */
-    private String installing;
-    private long installingSince;
     private long seq;
     private final Map<String, Instance> instances = new HashMap<>();
     private final Map<String, Sent> sent = new HashMap<>();
@@ -62,25 +49,6 @@ final class ModelMirror {
         this.coordinator = coordinator;
         this.lostAfterNanos = lostAfterNanos;
         this.startedNanos = startedNanos;
-    }
-
-    /**
-     * Whether an input may go to the node now. A node whose host has not reported may have no robot behaviour yet: its
-     * first input has the BMS install it there, and the BMS takes the inputs held meanwhile as one install; inputs for
-     * a second such node held with them would be left untaken. So such nodes are sent inputs one at a time: the next
-     * once the one before has reported, or after {@link #INSTALL_NANOS}.
-     *
-     * @param self this binding's node, whose host is in the same bundle
-     */
-    boolean mayFire(String node, String self, long nowNanos) {
-        if (node.equals(self) || hosts.contains(node)) {
-            return true;
-        }
-        if (installing == null || hosts.contains(installing) || nowNanos - installingSince >= INSTALL_NANOS) {
-            installing = node;
-            installingSince = nowNanos;
-        }
-        return installing.equals(node);
     }
 
     /** @return whether the robot's instance is not reported yet and may still be, being early days for this mirror */
@@ -111,7 +79,6 @@ final class ModelMirror {
         if (r.robot == null || r.node == null) {
             return List.of();
         }
-        hosts.add(r.node);
         Instance before = instances.put(r.robot, new Instance(r.node,
                 r.places == null ? List.of() : List.copyOf(r.places), data(r.data)));
         Sent s = sent.get(r.robot);

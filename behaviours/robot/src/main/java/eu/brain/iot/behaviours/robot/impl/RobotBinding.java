@@ -67,7 +67,8 @@ import eu.brain.iot.eventing.api.SmartBehaviour;
  * yet, idle before its goal or its dock, going home with its cart) are the recovery step ({@link Recovery}), looked
  * at before the normal moves.
  * A robot's model instance runs on the node that owns the robot ({@link RobotModelHost}): a port is fired by a
- * {@link RobotModelInput} to every node, and the robot's host answers with a {@link RobotModelReport} of its places,
+ * {@link RobotModelInput} naming that node (nodes without a host yet one at a time: {@link HostInstalls}), and the
+ * robot's host answers with a {@link RobotModelReport} of its places,
  * data and the steps its extern functions asked of the fleet, which this binding applies ({@link ModelMirror});
  * until that report comes the binding leaves the robot alone, so that it never reads a place of the model without
  * the errand that goes with it. Robot-sim's {@code robotK} is component {@code Robot<(K-1)%3+1>} of group
@@ -128,6 +129,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private final EventBus bus;
     /** The robots' model instances as their hosts report them. */
     private final ModelMirror instances;
+    /** Which nodes may be sent inputs now: those without a host yet, one at a time. */
+    private final HostInstalls installs;
     private final long patienceNanos;
     /** The fleet's thread, which owns this binding's state too. */
     private final BindingThread thread;
@@ -158,6 +161,7 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         this.thread = fleet.thread();
         this.pollNanos = thread.periodNanos();
         this.instances = new ModelMirror(leadership.instanceId(), pollNanos * LOST_AFTER_LOOKS, System.nanoTime());
+        this.installs = new HostInstalls(leadership.nodeName());
         this.patienceNanos = pollNanos * Math.max(1, config.patience_polls());
         this.looks = thread.start(this::safeTick);
         LOG.log(System.Logger.Level.INFO, "robot binding: a look every {0} ms, patience {1} ms (wall time)",
@@ -248,6 +252,9 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
         @Override
         public void reported(RobotInput.Reported r) {
             String robot = r.report().robot;
+            if (r.report().node != null) {
+                installs.reported(r.report().node);
+            }
             for (ModelStep step : instances.reported(r.report())) {
                 switch (step.kind()) {
                     case MOVE_ON -> fleet.resume(robot, "its errand");
@@ -450,8 +457,8 @@ public final class RobotBinding implements SmartBehaviour<BrainIoTEvent> {
     private void fire(Instance in, ModelPort port, double position, int detect) {
         long now = System.nanoTime();
         String node = fleet.view().ownerNode(in.robot()).orElse(leadership.nodeName());
-        if (!instances.mayFire(node, leadership.nodeName(), now)) {
-            return; // its node may have no host yet: another node's is being installed first (ModelMirror)
+        if (!installs.mayFire(node, now)) {
+            return; // its node may have no host yet: another node's is being installed first
         }
         published.put(in.robot(), new Published(in.places(), in.data(), now));
         bus.deliver(instances.input(in.robot(), node, port, position, detect, now));

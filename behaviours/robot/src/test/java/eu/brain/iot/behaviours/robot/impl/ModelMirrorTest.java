@@ -72,20 +72,6 @@ class ModelMirrorTest {
     }
 
     @Test
-    void nodesWithoutAHostAreSentInputsOneAtATime() {
-        assertThat(mirror.mayFire("node1", "node1", 0)).as("this node's host: in the same bundle").isTrue();
-        assertThat(mirror.mayFire("node2", "node1", 0)).as("the first node without a host").isTrue();
-        assertThat(mirror.mayFire("node3", "node1", 1)).as("while node2's is installed").isFalse();
-        assertThat(mirror.mayFire("node2", "node1", 2)).isTrue();
-        mirror.reported(report("node2", null, -1, List.of(), "")); // node2's host is there
-        assertThat(mirror.mayFire("node3", "node1", 3)).isTrue();
-        assertThat(mirror.mayFire("node4", "node1", 4)).isFalse();
-        assertThat(mirror.mayFire("node4", "node1", 3 + ModelMirror.INSTALL_NANOS))
-                .as("node3's install took too long: the next node's turn").isTrue();
-        assertThat(mirror.mayFire("node2", "node1", 5)).as("a node with a host, always").isTrue();
-    }
-
-    @Test
     void anInputNoHostAnswersIsGivenUp() {
         mirror.input("robot4", "node2", ModelPort.UNLOAD_TO_UNLOAD, 2, 0, 0);
         assertThat(mirror.awaiting("robot4", LOST - 1)).isTrue();
